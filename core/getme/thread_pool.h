@@ -1,0 +1,52 @@
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace getme {
+
+// A fixed set of worker threads running ParallelFor over statically partitioned chunks.
+//
+// Why not TBB or OpenMP: results must be bit-identical for any thread count, which the engine
+// achieves by never accumulating across chunks in scheduling order; it needs only a blocking
+// "run these independent chunks" primitive with an exact thread count per job (the server runs
+// several jobs side by side), and it must stay clean under ThreadSanitizer, which does not see
+// libgomp's synchronisation. That is 100 lines of std::thread.
+class ThreadPool {
+ public:
+  // threads <= 0 means std::thread::hardware_concurrency().
+  explicit ThreadPool(int threads = 1);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int thread_count() const { return static_cast<int>(workers_.size()) + 1; }
+
+  // Calls body(begin, end) for consecutive ranges covering [0, count), each at most `grain`
+  // long, on all threads (the caller included), and returns when all are done. Bodies must
+  // write disjoint data.
+  void ParallelFor(std::int64_t count, std::int64_t grain,
+                   const std::function<void(std::int64_t, std::int64_t)>& body);
+
+ private:
+  void WorkerLoop();
+  void RunChunks();
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable work_ready_;
+  std::condition_variable work_done_;
+  const std::function<void(std::int64_t, std::int64_t)>* body_ = nullptr;
+  std::int64_t count_ = 0;
+  std::int64_t grain_ = 1;
+  std::int64_t next_chunk_ = 0;  // guarded by mutex_
+  int busy_ = 0;                 // workers still inside the current ParallelFor
+  std::uint64_t generation_ = 0;
+  bool stopping_ = false;
+};
+
+}  // namespace getme
