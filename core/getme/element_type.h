@@ -21,8 +21,10 @@ constexpr int NodeCount(ElementType type) {
   return kCounts[TypeIndex(type)];
 }
 
-constexpr std::string_view TypeName(ElementType type) {
-  constexpr std::array<std::string_view, kElementTypeCount> kNames = {"tetrahedron", "hexahedron",
+// const char* rather than std::string_view: Debian's Abseil is built with its own absl::string_view,
+// which does not convert from std::string_view (so StrCat would not accept it).
+constexpr const char* TypeName(ElementType type) {
+  constexpr std::array<const char*, kElementTypeCount> kNames = {"tetrahedron", "hexahedron",
                                                                       "pyramid", "prism"};
   return kNames[TypeIndex(type)];
 }

@@ -9,7 +9,7 @@ namespace getme {
 
 enum class Phase { kUntangle, kSimultaneous, kSequential, kWarpage, kSmartLaplace, kLaplace };
 
-std::string_view PhaseName(Phase phase);
+const char* PhaseName(Phase phase);
 
 // One event per iteration of a phase (per sequential_cycle picks in the sequential phases),
 // the last one of each phase marked final. The service streams exactly these.

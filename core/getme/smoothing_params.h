@@ -19,7 +19,7 @@ enum class Method {
   kLaplace,       // plain Laplace: may invert elements, reported as invalid
 };
 
-std::string_view MethodName(Method method);
+const char* MethodName(Method method);
 absl::StatusOr<Method> ParseMethod(std::string_view name);
 
 // Per-element-type values, indexed by TypeIndex(type): tet, hex, pyramid, prism.

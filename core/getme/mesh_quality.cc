@@ -1,0 +1,139 @@
+#include "getme/mesh_quality.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "getme/block_loops.h"
+#include "getme/element_quality.h"
+#include "getme/vec3.h"
+
+namespace getme {
+namespace {
+
+// Fixed chunk size of deterministic reductions: independent of the thread count.
+constexpr std::int64_t kReductionChunk = 8192;
+
+template <typename Kernel>
+void ComputePerElement(const Mesh& mesh, ThreadPool& pool, Kernel&& kernel, auto* out) {
+  ParallelForEachBlock(mesh, pool,
+                       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin,
+                                              std::int64_t end) {
+                         constexpr int kNodes = ElementTable<kType>::kNodes;
+                         for (std::int64_t i = begin; i < end; ++i) {
+                           const auto nodes =
+                               GatherNodes<kType>(mesh, block.nodes.data() + i * kNodes);
+                           out[block.elements[i]] = kernel.template operator()<kType>(nodes);
+                         }
+                       });
+}
+
+}  // namespace
+
+void ComputeElementQualities(const Mesh& mesh, ThreadPool& pool, std::vector<double>& quality) {
+  quality.resize(mesh.element_count());
+  ComputePerElement(
+      mesh, pool,
+      []<ElementType kType>(const ElementNodes<kType>& nodes) { return MeanRatio<kType>(nodes); },
+      quality.data());
+}
+
+std::vector<double> ComputeElementQualities(const Mesh& mesh, ThreadPool& pool) {
+  std::vector<double> quality;
+  ComputeElementQualities(mesh, pool, quality);
+  return quality;
+}
+
+std::vector<double> ComputeElementWarpages(const Mesh& mesh, ThreadPool& pool) {
+  std::vector<double> warpage(mesh.element_count());
+  ComputePerElement(
+      mesh, pool,
+      []<ElementType kType>(const ElementNodes<kType>& nodes) { return Warpage<kType>(nodes); },
+      warpage.data());
+  return warpage;
+}
+
+std::vector<std::uint8_t> ComputeElementValidity(const Mesh& mesh, ThreadPool& pool) {
+  std::vector<std::uint8_t> valid(mesh.element_count());
+  ComputePerElement(
+      mesh, pool,
+      []<ElementType kType>(const ElementNodes<kType>& nodes) {
+        return static_cast<std::uint8_t>(IsValid<kType>(nodes) ? 1 : 0);
+      },
+      valid.data());
+  return valid;
+}
+
+QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& pool) {
+  const auto count = static_cast<std::int64_t>(quality.size());
+  if (count == 0) return {};
+  const std::int64_t chunks = (count + kReductionChunk - 1) / kReductionChunk;
+  std::vector<double> chunk_min(chunks), chunk_sum(chunks);
+  pool.ParallelFor(chunks, 1, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t c = first; c < last; ++c) {
+      const std::int64_t begin = c * kReductionChunk;
+      const std::int64_t end = std::min(count, begin + kReductionChunk);
+      double minimum = quality[begin];
+      double sum = 0.0;
+      for (std::int64_t i = begin; i < end; ++i) {
+        minimum = std::min(minimum, quality[i]);
+        sum += quality[i];
+      }
+      chunk_min[c] = minimum;
+      chunk_sum[c] = sum;
+    }
+  });
+  QualitySummary summary{chunk_min[0], 0.0};
+  double sum = 0.0;
+  for (std::int64_t c = 0; c < chunks; ++c) {
+    summary.q_min = std::min(summary.q_min, chunk_min[c]);
+    sum += chunk_sum[c];
+  }
+  summary.q_mean = sum / static_cast<double>(count);
+  return summary;
+}
+
+MeshQuality EvaluateMeshQuality(const Mesh& mesh, ThreadPool& pool, const QualityOptions& options) {
+  const std::vector<double> quality = ComputeElementQualities(mesh, pool);
+  const std::vector<double> warpage = ComputeElementWarpages(mesh, pool);
+  const std::vector<std::uint8_t> valid = ComputeElementValidity(mesh, pool);
+  const QualitySummary summary = SummarizeQualities(quality, pool);
+
+  MeshQuality result;
+  result.elements = mesh.element_count();
+  result.q_min = summary.q_min;
+  result.q_mean = summary.q_mean;
+  const int bins = std::max(1, options.histogram_bins);
+  result.histogram.assign(bins, 0);
+
+  std::int64_t warped_elements = 0;
+  double warpage_sum = 0.0;
+  for (ElementType type : kAllElementTypes) {
+    TypeQuality& stats = result.by_type[TypeIndex(type)];
+    const ElementBlock& block = mesh.block(type);
+    double sum = 0.0;
+    for (ElementId e : block.elements) {
+      ++stats.count;
+      stats.q_min = std::min(stats.q_min, quality[e]);
+      sum += quality[e];
+      if (!valid[e]) ++stats.invalid;
+      if (type != ElementType::kTetrahedron) {
+        ++warped_elements;
+        warpage_sum += warpage[e];
+        result.warpage_max = std::max(result.warpage_max, warpage[e]);
+      }
+    }
+    if (stats.count > 0) stats.q_mean = sum / static_cast<double>(stats.count);
+    result.invalid += stats.invalid;
+  }
+  if (warped_elements > 0) result.warpage_mean = warpage_sum / static_cast<double>(warped_elements);
+  for (std::int64_t e = 0; e < result.elements; ++e) {
+    if (!valid[e] && static_cast<int>(result.first_invalid.size()) < options.max_listed_invalid) {
+      result.first_invalid.push_back(static_cast<ElementId>(e));
+    }
+    const int bin = std::min(bins - 1, static_cast<int>(std::floor(quality[e] * bins)));
+    ++result.histogram[std::max(0, bin)];
+  }
+  return result;
+}
+
+}  // namespace getme
