@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds, and runs the whole test suite three times: the Release build
+# (build/), then ASan+UBSan (build-asan/) and TSan (build-tsan/). Exits nonzero if any build or
+# test fails; every stage still runs, and a summary with timings comes last.
+# Environment:
+#   GETME_SKIP_SANITIZERS=1      run the Release suite only
+#   GETME_SANITIZER_CTEST_ARGS   ctest filter for the sanitizer runs (default: -LE slow, i.e. all
+#                                tests but those labelled slow), e.g. "-R Smoother" or "" for all
+#   GETME_JOBS                   parallel compile and test jobs (default: every core)
+set -euo pipefail
+# shellcheck source=scripts/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+# Reports as errors what would otherwise scroll past; user-set options win.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:detect_stack_use_after_return=1:strict_init_order=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}"
+
+read -ra sanitizer_filter <<< "${GETME_SANITIZER_CTEST_ARGS--LE slow}"
+
+summary=()
+failed=0
+
+# run_stage NAME SANITIZER [ctest filter...]: builds one variant and runs its tests.
+run_stage() {
+  local name="$1" sanitizer="$2"
+  shift 2
+  local build_dir start result
+  build_dir="$(build_dir_for "$sanitizer")"
+  start=$SECONDS
+  result=passed
+  if ! bash "$GETME_ROOT/scripts/build.sh" ${sanitizer:+--sanitize "$sanitizer"}; then
+    result="FAILED (build)"
+  else
+    log "Testing $name ($build_dir${*:+, ctest $*})"
+    run_instrumented "$sanitizer" ctest --test-dir "$build_dir" --output-on-failure \
+      --no-tests=error --parallel "$(build_jobs)" "$@" || result="FAILED (tests)"
+  fi
+  [ "$result" = passed ] || failed=1
+  summary+=("$(printf '%-10s %-16s %5ds' "$name" "$result" $((SECONDS - start)))")
+}
+
+bash "$GETME_ROOT/scripts/setup.sh"
+run_stage release ""
+if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ]; then
+  summary+=("sanitizers skipped (GETME_SKIP_SANITIZERS=1)")
+else
+  run_stage asan+ubsan address "${sanitizer_filter[@]}"
+  run_stage tsan thread "${sanitizer_filter[@]}"
+fi
+
+log "Summary (total ${SECONDS}s)"
+printf '%s\n' "${summary[@]}"
+exit "$failed"
