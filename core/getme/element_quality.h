@@ -30,11 +30,15 @@ inline bool IsValid(const ElementNodes<kType>& p) {
   return true;
 }
 
-// Mean ratio quality number (Def. 3), or 0 for an invalid element (NOTES.md §4: an invalid
-// element counts as q = 0). Clamped to [0, 1] because rounding can give a regular element
-// 1 + 2e-16, which would make the simultaneous weight (1 − q)^η NaN.
+// Returned by MeanRatioOrInvalid for an element that is not valid (Def. 2).
+inline constexpr double kInvalidQuality = -1.0;
+
+// Mean ratio quality number (Def. 3, eq. 10) clamped to [0, 1], or kInvalidQuality when a node
+// tetrahedron has det ≤ 0: one pass gives both validity and quality. The clamp matters because
+// rounding can give a regular element 1 + 2e-16, which would make the simultaneous weight
+// (1 − q)^η NaN (NOTES.md §4).
 template <ElementType kType>
-inline double MeanRatio(const ElementNodes<kType>& p) {
+inline double MeanRatioOrInvalid(const ElementNodes<kType>& p) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
   double sum = 0.0;
@@ -43,7 +47,7 @@ inline double MeanRatio(const ElementNodes<kType>& p) {
     const Vec3 d1 = p[t[2]] - p[t[0]];
     const Vec3 d2 = p[t[3]] - p[t[0]];
     const double det_d = d0.dot(d1.cross(d2));
-    if (!(det_d > 0.0)) return 0.0;
+    if (!(det_d > 0.0)) return kInvalidQuality;
     // S = D W⁻¹ with W⁻¹ upper triangular: column j of S is Σ_i D_i · W⁻¹(i, j).
     const Vec3 s0 = d0 * w[0][0];
     const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
@@ -54,6 +58,12 @@ inline double MeanRatio(const ElementNodes<kType>& p) {
   }
   const double q = sum / static_cast<double>(Table::kNodeTets.size());
   return std::clamp(q, 0.0, 1.0);
+}
+
+// Mean ratio (Def. 3), with an invalid element counted as q = 0 (NOTES.md §4).
+template <ElementType kType>
+inline double MeanRatio(const ElementNodes<kType>& p) {
+  return std::max(0.0, MeanRatioOrInvalid<kType>(p));
 }
 
 // Warpage of the quad face (a, b, c, d) (Sec. 4.4): 1 − min((n̂0·n̂2)³, (n̂1·n̂3)³) ∈ [0, 2], with

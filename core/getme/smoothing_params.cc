@@ -96,7 +96,8 @@ absl::Status SmoothingParams::Validate() const {
         {"penalty_invalid", penalty_invalid},
         {"penalty_repeat", penalty_repeat},
         {"penalty_success", penalty_success},
-        {"laplace_tolerance", laplace_tolerance}}) {
+        {"laplace_tolerance", laplace_tolerance},
+        {"sequential_improvement_tolerance", sequential_improvement_tolerance}}) {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");

@@ -50,10 +50,13 @@ struct SmoothingParams {
   double penalty_invalid = 0.01;   // Δπ_i: the transformation produced an invalid element
   double penalty_repeat = 0.0005;  // Δπ_r: the same element was picked in the previous step
   double penalty_success = 0.01;   // Δπ_s: subtracted after a successful transformation
-  // The paper leaves the stop rule open (NOTES.md §5): stop when the best q_min has not improved
-  // for this many picks, or at the cap. 0 means 10 × the number of elements.
+  // The paper leaves the stop rule open (NOTES.md §5): stop when q_min has not risen by at least
+  // sequential_improvement_tolerance for sequential_stall_iterations picks, or at the cap. The
+  // best-q_min state seen is handed on. 0 picks automatic values (docs/quality.md): stall
+  // max(2000, elements / 2), cap 20 × elements.
   std::int64_t sequential_stall_iterations = 0;
-  std::int64_t sequential_max_iterations = 0;  // 0 means 100 × the number of elements
+  std::int64_t sequential_max_iterations = 0;
+  double sequential_improvement_tolerance = 1e-4;
   // Picks between two progress events / cancellation checks / q_mean evaluations (Sec. 3.2,
   // last paragraph: q_mean is evaluated only every prescribed number of iterations).
   std::int64_t sequential_cycle = 1000;

@@ -1,0 +1,227 @@
+#include "getme/sequential_smoother.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "getme/element_quality.h"
+#include "getme/indexed_min_heap.h"
+#include "getme/transform.h"
+#include "getme/vec3.h"
+
+namespace getme {
+namespace {
+
+struct NodeBackup {
+  NodeId node;
+  double x, y, z;
+};
+
+class SequentialSubstep {
+ public:
+  SequentialSubstep(SmoothingContext& context, SelectionCriterion criterion)
+      : context_(context),
+        mesh_(context.mesh),
+        params_(context.params),
+        criterion_(criterion),
+        phase_(criterion == SelectionCriterion::kMeanRatio ? Phase::kSequential : Phase::kWarpage),
+        penalty_(mesh_.element_count(), 0.0),
+        criterion_value_(mesh_.element_count()),
+        selection_(mesh_.element_count()),
+        quality_min_(mesh_.element_count()),
+        criterion_min_(mesh_.element_count()) {}
+
+  absl::StatusOr<PhaseSummary> Run();
+
+ private:
+  double Criterion(ElementId element, double quality) const;
+  bool HasMovableNode(ElementId element) const;
+  // One pick of Steps 1–3; returns the number of nodes reverted (0 when it was applied).
+  std::int64_t TransformWorst();
+  void RestoreBest();
+
+  SmoothingContext& context_;
+  Mesh& mesh_;
+  const SmoothingParams& params_;
+  const SelectionCriterion criterion_;
+  const Phase phase_;
+  std::vector<double> penalty_;          // π_j ≥ 0
+  std::vector<double> criterion_value_;  // q(E_j) or q_γ(E_j)
+  IndexedMinHeap selection_;             // keyed by criterion + π, elements with a movable node
+  IndexedMinHeap quality_min_;           // keyed by q, every element: the mesh's q_min
+  IndexedMinHeap criterion_min_;         // keyed by the criterion, every element
+  double quality_sum_ = 0.0;
+  ElementId last_pick_ = -1;
+  std::vector<NodeBackup> undo_since_best_;
+  std::vector<NodeBackup> pick_backup_;
+  std::vector<ElementId> affected_;
+  std::vector<double> affected_quality_;
+};
+
+double SequentialSubstep::Criterion(ElementId element, double quality) const {
+  const double q = std::max(0.0, quality);
+  if (criterion_ == SelectionCriterion::kMeanRatio) return q;
+  const NodeId* ids = mesh_.element_nodes(element).data();
+  const double warpage = DispatchElementType(mesh_.type(element), [&]<ElementType kType>() {
+    return Warpage<kType>(GatherNodes<kType>(mesh_, ids));
+  });
+  return std::min(q, params_.gamma * (1.0 - warpage / 2.0));
+}
+
+bool SequentialSubstep::HasMovableNode(ElementId element) const {
+  for (NodeId node : mesh_.element_nodes(element)) {
+    if (context_.movable[node]) return true;
+  }
+  return false;
+}
+
+std::int64_t SequentialSubstep::TransformWorst() {
+  const ElementId pick = selection_.top();
+  // Δπ_r: the same element was picked in the previous step (Step 3.2).
+  if (pick == last_pick_) penalty_[pick] += params_.penalty_repeat;
+  last_pick_ = pick;
+
+  // Steps 1.2, 1.3 and 2: transform with the fixed σ^type, scale, relax, set the free nodes.
+  auto x = mesh_.x();
+  auto y = mesh_.y();
+  auto z = mesh_.z();
+  const std::span<const NodeId> ids = mesh_.element_nodes(pick);
+  const ElementType type = mesh_.type(pick);
+  pick_backup_.clear();
+  DispatchElementType(type, [&]<ElementType kType>() {
+    const auto moved = RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
+                                               params_.sequential_sigma[TypeIndex(kType)],
+                                               params_.sequential_rho);
+    for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
+      const NodeId node = ids[k];
+      if (!context_.movable[node]) continue;
+      pick_backup_.push_back({node, x[node], y[node], z[node]});
+      x[node] = moved[k].x();
+      y[node] = moved[k].y();
+      z[node] = moved[k].z();
+    }
+  });
+
+  // Step 3.1: the element and its neighbours must stay valid.
+  affected_.assign(1, pick);
+  const auto neighbours = mesh_.element_neighbours(pick);
+  affected_.insert(affected_.end(), neighbours.begin(), neighbours.end());
+  affected_quality_.resize(affected_.size());
+  bool valid = true;
+  for (std::size_t i = 0; i < affected_.size() && valid; ++i) {
+    affected_quality_[i] = ElementQualityOrInvalid(mesh_, affected_[i]);
+    valid = affected_quality_[i] >= 0.0;
+  }
+  if (!valid) {
+    for (const NodeBackup& b : pick_backup_) {
+      x[b.node] = b.x;
+      y[b.node] = b.y;
+      z[b.node] = b.z;
+    }
+    penalty_[pick] += params_.penalty_invalid;  // Δπ_i
+    selection_.Update(pick, criterion_value_[pick] + penalty_[pick]);
+    return static_cast<std::int64_t>(pick_backup_.size());
+  }
+  penalty_[pick] = std::max(0.0, penalty_[pick] - params_.penalty_success);  // Δπ_s
+  undo_since_best_.insert(undo_since_best_.end(), pick_backup_.begin(), pick_backup_.end());
+  for (std::size_t i = 0; i < affected_.size(); ++i) {
+    const ElementId element = affected_[i];
+    const double q = affected_quality_[i];
+    quality_sum_ += q - std::max(0.0, context_.quality[element]);
+    context_.quality[element] = q;
+    criterion_value_[element] = Criterion(element, q);
+    quality_min_.Update(element, q);
+    criterion_min_.Update(element, criterion_value_[element]);
+    if (selection_.contains(element)) {
+      selection_.Update(element, criterion_value_[element] + penalty_[element]);
+    }
+  }
+  return 0;
+}
+
+void SequentialSubstep::RestoreBest() {
+  auto x = mesh_.x();
+  auto y = mesh_.y();
+  auto z = mesh_.z();
+  for (auto it = undo_since_best_.rbegin(); it != undo_since_best_.rend(); ++it) {
+    x[it->node] = it->x;
+    y[it->node] = it->y;
+    z[it->node] = it->z;
+  }
+  undo_since_best_.clear();
+  context_.RefreshQuality();
+}
+
+absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
+  const double phase_start = context_.ElapsedSeconds();
+  const std::int64_t elements = mesh_.element_count();
+  const std::int64_t stall = params_.sequential_stall_iterations > 0
+                                 ? params_.sequential_stall_iterations
+                                 : std::max<std::int64_t>(2000, elements / 2);
+  const std::int64_t cap =
+      params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 20 * elements;
+
+  for (std::int64_t e = 0; e < elements; ++e) {
+    const auto element = static_cast<ElementId>(e);
+    const double q = std::max(0.0, context_.quality[e]);
+    quality_sum_ += q;
+    criterion_value_[e] = Criterion(element, q);
+    quality_min_.Push(element, q);
+    criterion_min_.Push(element, criterion_value_[e]);
+    if (HasMovableNode(element)) selection_.Push(element, criterion_value_[e]);
+  }
+
+  PhaseSummary summary{phase_, 0, 0.0, 0.0, 0.0, 0};
+  double best_min = criterion_min_.top_key();
+  double stall_reference = best_min;
+  std::int64_t last_improvement = 0;
+  std::int64_t cycle_reverts = 0;
+  bool cancelled = false;
+  std::int64_t pick = 0;
+  while (!selection_.empty() && pick < cap) {
+    ++pick;
+    cycle_reverts += TransformWorst();
+    const double current_min = criterion_min_.top_key();
+    if (current_min > best_min) {
+      best_min = current_min;
+      undo_since_best_.clear();
+    }
+    if (current_min >= stall_reference + params_.sequential_improvement_tolerance) {
+      stall_reference = current_min;
+      last_improvement = pick;
+    }
+    const bool stalled = pick - last_improvement >= stall;
+    if (pick % params_.sequential_cycle == 0 || stalled || pick == cap) {
+      summary.reverted_nodes += cycle_reverts;
+      context_.Report({phase_, pick, quality_min_.top_key(),
+                       quality_sum_ / static_cast<double>(elements), 0, cycle_reverts,
+                       context_.ElapsedSeconds(), false});
+      cycle_reverts = 0;
+      if (context_.Cancelled()) {
+        cancelled = true;
+        break;
+      }
+    }
+    if (stalled) break;
+  }
+  summary.reverted_nodes += cycle_reverts;
+  summary.iterations = pick;
+  RestoreBest();
+  const SmoothingContext::Summary state = context_.Summarize();
+  summary.q_min = state.q_min;
+  summary.q_mean = state.q_mean;
+  summary.seconds = context_.ElapsedSeconds() - phase_start;
+  context_.Report({phase_, pick, state.q_min, state.q_mean, state.invalid, 0,
+                   context_.ElapsedSeconds(), true});
+  if (cancelled) return absl::CancelledError("smoothing cancelled during the sequential substep");
+  return summary;
+}
+
+}  // namespace
+
+absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context,
+                                           SelectionCriterion criterion) {
+  return SequentialSubstep(context, criterion).Run();
+}
+
+}  // namespace getme
