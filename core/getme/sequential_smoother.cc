@@ -56,6 +56,7 @@ class SequentialSubstep {
   std::vector<NodeBackup> pick_backup_;
   std::vector<ElementId> affected_;
   std::vector<double> affected_quality_;
+  std::vector<double> affected_criterion_;
 };
 
 double SequentialSubstep::Criterion(ElementId element, double quality) const {
@@ -107,10 +108,12 @@ std::int64_t SequentialSubstep::TransformWorst() {
   const auto neighbours = mesh_.element_neighbours(pick);
   affected_.insert(affected_.end(), neighbours.begin(), neighbours.end());
   affected_quality_.resize(affected_.size());
+  affected_criterion_.resize(affected_.size());
   bool valid = true;
   for (std::size_t i = 0; i < affected_.size() && valid; ++i) {
     affected_quality_[i] = ElementQualityOrInvalid(mesh_, affected_[i]);
     valid = affected_quality_[i] >= 0.0;
+    affected_criterion_[i] = Criterion(affected_[i], affected_quality_[i]);
   }
   if (!valid) {
     for (const NodeBackup& b : pick_backup_) {
@@ -129,7 +132,7 @@ std::int64_t SequentialSubstep::TransformWorst() {
     const double q = affected_quality_[i];
     quality_sum_ += q - std::max(0.0, context_.quality[element]);
     context_.quality[element] = q;
-    criterion_value_[element] = Criterion(element, q);
+    criterion_value_[element] = affected_criterion_[i];
     quality_min_.Update(element, q);
     criterion_min_.Update(element, criterion_value_[element]);
     if (selection_.contains(element)) {
@@ -157,9 +160,9 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const std::int64_t elements = mesh_.element_count();
   const std::int64_t stall = params_.sequential_stall_iterations > 0
                                  ? params_.sequential_stall_iterations
-                                 : std::max<std::int64_t>(2000, elements / 2);
+                                 : std::max<std::int64_t>(10000, 5 * elements);
   const std::int64_t cap =
-      params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 20 * elements;
+      params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 50 * elements;
 
   for (std::int64_t e = 0; e < elements; ++e) {
     const auto element = static_cast<ElementId>(e);

@@ -53,10 +53,11 @@ struct SmoothingParams {
   // The paper leaves the stop rule open (NOTES.md §5): stop when q_min has not risen by at least
   // sequential_improvement_tolerance for sequential_stall_iterations picks, or at the cap. The
   // best-q_min state seen is handed on. 0 picks automatic values (docs/quality.md): stall
-  // max(2000, elements / 2), cap 20 × elements.
+  // max(10000, 5 × elements), cap 50 × elements. q_min oscillates as neighbours take turns being
+  // the worst element, so the window must be long: cub_fru.vtk's best comes after ~10 × elements.
   std::int64_t sequential_stall_iterations = 0;
   std::int64_t sequential_max_iterations = 0;
-  double sequential_improvement_tolerance = 1e-4;
+  double sequential_improvement_tolerance = 1e-6;
   // Picks between two progress events / cancellation checks / q_mean evaluations (Sec. 3.2,
   // last paragraph: q_mean is evaluated only every prescribed number of iterations).
   std::int64_t sequential_cycle = 1000;

@@ -50,6 +50,8 @@ class Untangler {
 
  private:
   Tangle Measure(std::span<const ElementId> elements) const;
+  // Mean length of the edges at a node: the scale of moves tried for it.
+  double LocalLength(NodeId node) const;
   // Tries the candidate moves for one invalid element; keeps the best if it improves.
   bool Repair(ElementId element);
   std::vector<ElementId> InvalidElements() const;
@@ -74,6 +76,15 @@ Tangle Untangler::Measure(std::span<const ElementId> elements) const {
     });
   }
   return tangle;
+}
+
+double Untangler::LocalLength(NodeId node) const {
+  const Vec3 p(mesh_.x()[node], mesh_.y()[node], mesh_.z()[node]);
+  double sum = 0.0;
+  for (NodeId other : neighbours_.Row(node)) {
+    sum += (Vec3(mesh_.x()[other], mesh_.y()[other], mesh_.z()[other]) - p).norm();
+  }
+  return neighbours_.Row(node).empty() ? 0.0 : sum / static_cast<double>(neighbours_.Row(node).size());
 }
 
 bool Untangler::Repair(ElementId element) {
@@ -124,6 +135,33 @@ bool Untangler::Repair(ElementId element) {
     for (NodeId other : neighbours_.Row(ids[k])) mean += Vec3(x[other], y[other], z[other]);
     moved[k] = mean / static_cast<double>(neighbours_.Row(ids[k]).size());
     candidates.emplace_back(moved, k);
+  }
+
+  // Steepest descent of the region's inversion for each free node: where the transformed shape
+  // does not fit between fixed nodes, a short move that only un-inverts helps.
+  for (int k = 0; k < n; ++k) {
+    if (!context_.movable[ids[k]]) continue;
+    const double length = LocalLength(ids[k]);
+    const double h = 1e-6 * length;
+    Vec3 gradient;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::array<Vec3, kMaxElementNodes> probe = original;
+      probe[k][axis] += h;
+      place(probe, k);
+      const double plus = Measure(region_).inversion;
+      probe[k][axis] -= 2.0 * h;
+      place(probe, k);
+      const double minus = Measure(region_).inversion;
+      gradient[axis] = (plus - minus) / (2.0 * h);
+    }
+    place(original, -1);
+    const double norm = gradient.norm();
+    if (!(norm > 0.0)) continue;
+    for (double step = 0.5; step > 1e-3; step *= 0.5) {
+      std::array<Vec3, kMaxElementNodes> moved = original;
+      moved[k] -= (step * length / norm) * gradient;
+      candidates.emplace_back(moved, k);
+    }
   }
 
   const Tangle before = Measure(region_);

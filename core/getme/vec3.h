@@ -3,6 +3,7 @@
 #include <array>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 #include "getme/element_tables.h"
 #include "getme/mesh.h"
