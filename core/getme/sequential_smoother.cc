@@ -52,8 +52,10 @@ class SequentialSubstep {
   IndexedMinHeap criterion_min_;         // keyed by the criterion, every element
   double quality_sum_ = 0.0;
   ElementId last_pick_ = -1;
+  ElementId blocker_ = -1;  // a neighbour that a reverted step would have inverted
   std::vector<NodeBackup> undo_since_best_;
   std::vector<NodeBackup> pick_backup_;
+  std::vector<NodeBackup> pick_target_;
   std::vector<ElementId> affected_;
   std::vector<double> affected_quality_;
   std::vector<double> affected_criterion_;
@@ -77,7 +79,11 @@ bool SequentialSubstep::HasMovableNode(ElementId element) const {
 }
 
 std::int64_t SequentialSubstep::TransformWorst() {
-  const ElementId pick = selection_.top();
+  ElementId pick = selection_.top();
+  if (blocker_ >= 0) {
+    pick = blocker_;
+    blocker_ = -1;
+  }
   // Δπ_r: the same element was picked in the previous step (Step 3.2).
   if (pick == last_pick_) penalty_[pick] += params_.penalty_repeat;
   last_pick_ = pick;
@@ -89,6 +95,7 @@ std::int64_t SequentialSubstep::TransformWorst() {
   const std::span<const NodeId> ids = mesh_.element_nodes(pick);
   const ElementType type = mesh_.type(pick);
   pick_backup_.clear();
+  pick_target_.clear();
   DispatchElementType(type, [&]<ElementType kType>() {
     const auto moved = RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
                                                params_.sequential_sigma[TypeIndex(kType)],
@@ -97,23 +104,41 @@ std::int64_t SequentialSubstep::TransformWorst() {
       const NodeId node = ids[k];
       if (!context_.movable[node]) continue;
       pick_backup_.push_back({node, x[node], y[node], z[node]});
-      x[node] = moved[k].x();
-      y[node] = moved[k].y();
-      z[node] = moved[k].z();
+      pick_target_.push_back({node, moved[k].x(), moved[k].y(), moved[k].z()});
     }
   });
 
-  // Step 3.1: the element and its neighbours must stay valid.
+  // Step 3.1: the element and its neighbours must stay valid. With backtracking (a safeguard,
+  // docs/quality.md) a step that would invert a neighbour is retried at half the length.
   affected_.assign(1, pick);
   const auto neighbours = mesh_.element_neighbours(pick);
   affected_.insert(affected_.end(), neighbours.begin(), neighbours.end());
   affected_quality_.resize(affected_.size());
   affected_criterion_.resize(affected_.size());
-  bool valid = true;
-  for (std::size_t i = 0; i < affected_.size() && valid; ++i) {
-    affected_quality_[i] = ElementQualityOrInvalid(mesh_, affected_[i]);
-    valid = affected_quality_[i] >= 0.0;
-    affected_criterion_[i] = Criterion(affected_[i], affected_quality_[i]);
+  bool valid = false;
+  double fraction = 1.0;
+  for (int attempt = 0; attempt <= params_.sequential_backtracking_steps && !valid;
+       ++attempt, fraction *= 0.5) {
+    for (std::size_t i = 0; i < pick_target_.size(); ++i) {
+      const NodeBackup& from = pick_backup_[i];
+      const NodeBackup& to = pick_target_[i];
+      x[from.node] = from.x + fraction * (to.x - from.x);
+      y[from.node] = from.y + fraction * (to.y - from.y);
+      z[from.node] = from.z + fraction * (to.z - from.z);
+    }
+    valid = true;
+    for (std::size_t i = 0; i < affected_.size() && valid; ++i) {
+      affected_quality_[i] = ElementQualityOrInvalid(mesh_, affected_[i]);
+      valid = affected_quality_[i] >= 0.0;
+      if (!valid && params_.sequential_transform_blockers && selection_.contains(affected_[i])) {
+        blocker_ = affected_[i];
+      }
+    }
+  }
+  if (valid) {
+    for (std::size_t i = 0; i < affected_.size(); ++i) {
+      affected_criterion_[i] = Criterion(affected_[i], affected_quality_[i]);
+    }
   }
   if (!valid) {
     for (const NodeBackup& b : pick_backup_) {

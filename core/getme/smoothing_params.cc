@@ -117,6 +117,9 @@ absl::Status SmoothingParams::Validate() const {
     return OutOfRange("simultaneous_backtracking_steps", simultaneous_backtracking_steps,
                       "in [0, 30]");
   }
+  if (sequential_backtracking_steps < 0 || sequential_backtracking_steps > 30) {
+    return OutOfRange("sequential_backtracking_steps", sequential_backtracking_steps, "in [0, 30]");
+  }
   if (threads < 0 || threads > 1024) return OutOfRange("threads", threads, "in [0, 1024]");
   return absl::OkStatus();
 }

@@ -58,6 +58,13 @@ struct SmoothingParams {
   std::int64_t sequential_stall_iterations = 0;
   std::int64_t sequential_max_iterations = 0;
   double sequential_improvement_tolerance = 1e-6;
+  // Safeguard (docs/quality.md): a step that would make a neighbour invalid is retried at half
+  // its length up to this many times before it counts as reverted (Step 3.1). 0 = the paper.
+  int sequential_backtracking_steps = 10;
+  // Safeguard (docs/quality.md): when a step is reverted because it would invert a neighbour, that
+  // neighbour is transformed next. The mean ratio averages node tetrahedra, so an element with one
+  // nearly flat node tetrahedron can block its neighbours while never being the worst.
+  bool sequential_transform_blockers = true;
   // Picks between two progress events / cancellation checks / q_mean evaluations (Sec. 3.2,
   // last paragraph: q_mean is evaluated only every prescribed number of iterations).
   std::int64_t sequential_cycle = 1000;
