@@ -183,9 +183,9 @@ void SequentialSubstep::RestoreBest() {
 absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const double phase_start = context_.ElapsedSeconds();
   const std::int64_t elements = mesh_.element_count();
-  const std::int64_t stall = params_.sequential_stall_iterations > 0
-                                 ? params_.sequential_stall_iterations
-                                 : std::max<std::int64_t>(10000, 5 * elements);
+  const std::int64_t window = params_.sequential_stall_iterations > 0
+                                  ? params_.sequential_stall_iterations
+                                  : std::max<std::int64_t>(10000, elements);
   const std::int64_t cap =
       params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 50 * elements;
 
@@ -201,8 +201,8 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
 
   PhaseSummary summary{phase_, 0, 0.0, 0.0, 0.0, 0};
   double best_min = criterion_min_.top_key();
-  double stall_reference = best_min;
-  std::int64_t last_improvement = 0;
+  double window_start_min = best_min;
+  std::int64_t window_start = 0;
   std::int64_t cycle_reverts = 0;
   bool cancelled = false;
   std::int64_t pick = 0;
@@ -214,11 +214,13 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
       best_min = current_min;
       undo_since_best_.clear();
     }
-    if (current_min >= stall_reference + params_.sequential_improvement_tolerance) {
-      stall_reference = current_min;
-      last_improvement = pick;
+    // Stop rule: the best minimum rose by less than the tolerance over the last window of picks.
+    bool stalled = false;
+    if (pick - window_start >= window) {
+      stalled = best_min - window_start_min < params_.sequential_improvement_tolerance;
+      window_start_min = best_min;
+      window_start = pick;
     }
-    const bool stalled = pick - last_improvement >= stall;
     if (pick % params_.sequential_cycle == 0 || stalled || pick == cap) {
       summary.reverted_nodes += cycle_reverts;
       context_.Report({phase_, pick, quality_min_.top_key(),
