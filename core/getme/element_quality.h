@@ -67,7 +67,8 @@ inline double MeanRatio(const ElementNodes<kType>& p) {
 }
 
 // Warpage of the quad face (a, b, c, d) (Sec. 4.4): 1 − min((n̂0·n̂2)³, (n̂1·n̂3)³) ∈ [0, 2], with
-// n_k = (p_k − p_{k−1}) × (p_{k+1} − p_k). A degenerate corner (zero normal) counts as fully warped.
+// n_k = (p_k − p_{k−1}) × (p_{k+1} − p_k). A degenerate corner (zero normal) counts as fully
+// warped.
 inline double QuadWarpage(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3 q[4] = {a, b, c, d};
   Vec3 n[4];

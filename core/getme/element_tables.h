@@ -48,15 +48,14 @@ struct ElementTable<ElementType::kHexahedron> {
                                                          {4, {2, 3, 7, 6}},
                                                          {4, {3, 0, 4, 7}},
                                                          {4, {4, 7, 6, 5}}}};
-  static constexpr std::array<FaceIndices, 8> kDualFaces = {
-      {{3, {0, 1, 4, -1}},
-       {3, {0, 2, 1, -1}},
-       {3, {0, 3, 2, -1}},
-       {3, {0, 4, 3, -1}},
-       {3, {5, 4, 1, -1}},
-       {3, {5, 1, 2, -1}},
-       {3, {5, 2, 3, -1}},
-       {3, {5, 3, 4, -1}}}};
+  static constexpr std::array<FaceIndices, 8> kDualFaces = {{{3, {0, 1, 4, -1}},
+                                                             {3, {0, 2, 1, -1}},
+                                                             {3, {0, 3, 2, -1}},
+                                                             {3, {0, 4, 3, -1}},
+                                                             {3, {5, 4, 1, -1}},
+                                                             {3, {5, 1, 2, -1}},
+                                                             {3, {5, 2, 3, -1}},
+                                                             {3, {5, 3, 4, -1}}}};
   static constexpr std::array<NodeTetIndices, 8> kNodeTets = {{{0, 3, 4, 1},
                                                                {1, 0, 5, 2},
                                                                {2, 1, 6, 3},
@@ -119,12 +118,8 @@ struct ElementTable<ElementType::kPrism> {
                                                              {3, {4, 3, 1, -1}},
                                                              {3, {4, 1, 2, -1}},
                                                              {3, {4, 2, 3, -1}}}};
-  static constexpr std::array<NodeTetIndices, 6> kNodeTets = {{{0, 1, 2, 3},
-                                                               {1, 2, 0, 4},
-                                                               {2, 0, 1, 5},
-                                                               {3, 5, 4, 0},
-                                                               {4, 3, 5, 1},
-                                                               {5, 4, 3, 2}}};
+  static constexpr std::array<NodeTetIndices, 6> kNodeTets = {
+      {{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5}, {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}}};
   static constexpr std::array<EdgeIndices, 9> kEdges = {
       {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}, {0, 3}, {1, 4}, {2, 5}}};
   // W⁻¹ for W columns (1,0,0) (1/2,√3/2,0) (0,0,1).

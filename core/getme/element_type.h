@@ -7,7 +7,12 @@
 namespace getme {
 
 // The four volume element kinds of the paper (Fig. 1). The numeric values index per-type arrays.
-enum class ElementType : std::uint8_t { kTetrahedron = 0, kHexahedron = 1, kPyramid = 2, kPrism = 3 };
+enum class ElementType : std::uint8_t {
+  kTetrahedron = 0,
+  kHexahedron = 1,
+  kPyramid = 2,
+  kPrism = 3
+};
 
 inline constexpr int kElementTypeCount = 4;
 inline constexpr std::array<ElementType, kElementTypeCount> kAllElementTypes = {
@@ -21,11 +26,11 @@ constexpr int NodeCount(ElementType type) {
   return kCounts[TypeIndex(type)];
 }
 
-// const char* rather than std::string_view: Debian's Abseil is built with its own absl::string_view,
-// which does not convert from std::string_view (so StrCat would not accept it).
+// const char* rather than std::string_view: Debian's Abseil is built with its own
+// absl::string_view, which does not convert from std::string_view (so StrCat would not accept it).
 constexpr const char* TypeName(ElementType type) {
   constexpr std::array<const char*, kElementTypeCount> kNames = {"tetrahedron", "hexahedron",
-                                                                      "pyramid", "prism"};
+                                                                 "pyramid", "prism"};
   return kNames[TypeIndex(type)];
 }
 

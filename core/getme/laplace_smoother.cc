@@ -139,7 +139,8 @@ absl::StatusOr<PhaseSummary> RunSmartLaplace(SmoothingContext& context) {
   summary.seconds = context.ElapsedSeconds() - phase_start;
   context.Report({Phase::kSmartLaplace, summary.iterations, current.q_min, current.q_mean,
                   current.invalid, 0, context.ElapsedSeconds(), true});
-  if (cancelled) return absl::CancelledError("smoothing cancelled during smart Laplacian smoothing");
+  if (cancelled)
+    return absl::CancelledError("smoothing cancelled during smart Laplacian smoothing");
   return summary;
 }
 

@@ -51,7 +51,8 @@ void CollectFaces(const ElementBlock& block, std::vector<FaceKey>& faces) {
       for (int k = 0; k < face.size; ++k) sorted[k] = ids[face.nodes[k]];
       // Insertion sort of ≤ 4 ids (std::sort here trips a GCC 12 -Warray-bounds false positive).
       for (int k = 1; k < face.size; ++k) {
-        for (int j = k; j > 0 && sorted[j - 1] > sorted[j]; --j) std::swap(sorted[j - 1], sorted[j]);
+        for (int j = k; j > 0 && sorted[j - 1] > sorted[j]; --j)
+          std::swap(sorted[j - 1], sorted[j]);
       }
       faces.push_back(PackFace(sorted));
     }
@@ -99,8 +100,8 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   const std::int64_t node_count = mesh.node_count();
   const std::int64_t element_count = mesh.element_count();
   if (node_count == 0 || element_count == 0) {
-    return absl::InvalidArgumentError(absl::StrCat("empty mesh: ", node_count, " nodes and ",
-                                                   element_count, " volume elements"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("empty mesh: ", node_count, " nodes and ", element_count, " volume elements"));
   }
   if (node_count > kMaxIndex || element_count > kMaxIndex) {
     return absl::InvalidArgumentError(absl::StrCat("mesh too large: ", node_count, " nodes, ",
@@ -110,8 +111,8 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   for (std::int64_t i = 0; i < node_count; ++i) {
     if (!std::isfinite(mesh.x_[i]) || !std::isfinite(mesh.y_[i]) || !std::isfinite(mesh.z_[i])) {
       return absl::InvalidArgumentError(absl::StrCat("node ", i, " has a non-finite coordinate (",
-                                                     mesh.x_[i], ", ", mesh.y_[i], ", ",
-                                                     mesh.z_[i], ")"));
+                                                     mesh.x_[i], ", ", mesh.y_[i], ", ", mesh.z_[i],
+                                                     ")"));
     }
   }
   mesh.fixed_.assign(node_count, 0);
@@ -146,10 +147,9 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
       }
       for (int j = 0; j < k; ++j) {
         if (raw_nodes_[begin + j] == node) {
-          return absl::InvalidArgumentError(absl::StrCat("element ", e, " (", TypeName(type),
-                                                         ") uses node ", node,
-                                                         " twice (local nodes ", j, " and ", k,
-                                                         ")"));
+          return absl::InvalidArgumentError(
+              absl::StrCat("element ", e, " (", TypeName(type), ") uses node ", node,
+                           " twice (local nodes ", j, " and ", k, ")"));
         }
       }
       block.nodes.push_back(static_cast<NodeId>(node));

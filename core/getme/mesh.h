@@ -67,9 +67,7 @@ class Mesh {
   std::int64_t boundary_face_count() const { return boundary_face_count_; }
 
   // Elements containing the node, ascending ids.
-  std::span<const ElementId> node_elements(NodeId node) const {
-    return node_elements_.Row(node);
-  }
+  std::span<const ElementId> node_elements(NodeId node) const { return node_elements_.Row(node); }
   // Elements sharing at least one node with the element (excluding itself), ascending ids.
   std::span<const ElementId> element_neighbours(ElementId element) const {
     return element_neighbours_.Row(element);

@@ -15,16 +15,15 @@ constexpr std::int64_t kReductionChunk = 8192;
 
 template <typename Kernel>
 void ComputePerElement(const Mesh& mesh, ThreadPool& pool, Kernel&& kernel, auto* out) {
-  ParallelForEachBlock(mesh, pool,
-                       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin,
-                                              std::int64_t end) {
-                         constexpr int kNodes = ElementTable<kType>::kNodes;
-                         for (std::int64_t i = begin; i < end; ++i) {
-                           const auto nodes =
-                               GatherNodes<kType>(mesh, block.nodes.data() + i * kNodes);
-                           out[block.elements[i]] = kernel.template operator()<kType>(nodes);
-                         }
-                       });
+  ParallelForEachBlock(
+      mesh, pool,
+      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
+        constexpr int kNodes = ElementTable<kType>::kNodes;
+        for (std::int64_t i = begin; i < end; ++i) {
+          const auto nodes = GatherNodes<kType>(mesh, block.nodes.data() + i * kNodes);
+          out[block.elements[i]] = kernel.template operator()<kType>(nodes);
+        }
+      });
 }
 
 }  // namespace

@@ -97,9 +97,9 @@ std::int64_t SequentialSubstep::TransformWorst() {
   pick_backup_.clear();
   pick_target_.clear();
   DispatchElementType(type, [&]<ElementType kType>() {
-    const auto moved = RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
-                                               params_.sequential_sigma[TypeIndex(kType)],
-                                               params_.sequential_rho);
+    const auto moved =
+        RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
+                                params_.sequential_sigma[TypeIndex(kType)], params_.sequential_rho);
     for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
       const NodeId node = ids[k];
       if (!context_.movable[node]) continue;
@@ -241,8 +241,8 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   summary.q_min = state.q_min;
   summary.q_mean = state.q_mean;
   summary.seconds = context_.ElapsedSeconds() - phase_start;
-  context_.Report({phase_, pick, state.q_min, state.q_mean, state.invalid, 0,
-                   context_.ElapsedSeconds(), true});
+  context_.Report(
+      {phase_, pick, state.q_min, state.q_mean, state.invalid, 0, context_.ElapsedSeconds(), true});
   if (cancelled) return absl::CancelledError("smoothing cancelled during the sequential substep");
   return summary;
 }

@@ -14,7 +14,6 @@ enum class SelectionCriterion { kMeanRatio, kQualityGamma };
 // q + π in place (indexed min-heap with key updates), revert it if a neighbour becomes invalid,
 // and adjust its penalty π. Hands on the best state seen (highest minimum criterion value).
 // Requires a valid mesh; returns Cancelled (mesh valid, best state restored) if cancelled.
-absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context,
-                                           SelectionCriterion criterion);
+absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion);
 
 }  // namespace getme

@@ -46,8 +46,8 @@ void TransformAll(const SmoothingContext& context, std::vector<double>& corner_x
           const ElementId element = block.elements[i];
           const double q = std::max(0.0, context.quality[element]);
           const auto nodes = GatherNodes<kType>(mesh, block.nodes.data() + i * kNodes);
-          const auto moved =
-              RegularizingStep<kType>(nodes, sigma_min + sigma_span * (1.0 - q), params.simultaneous_rho);
+          const auto moved = RegularizingStep<kType>(nodes, sigma_min + sigma_span * (1.0 - q),
+                                                     params.simultaneous_rho);
           const double weight = std::pow(1.0 - q, params.simultaneous_eta);
           element_weight[element] = weight;
           double* out = corner_xyz.data() + 3 * (corner_base + i * kNodes);
@@ -81,24 +81,26 @@ void UpdateNodes(SmoothingContext& context, const std::vector<double>& corner_xy
   auto x = mesh.x();
   auto y = mesh.y();
   auto z = mesh.z();
-  context.pool.ParallelFor(mesh.node_count(), kNodeGrain, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t node = begin; node < end; ++node) {
-      if (!context.movable[node]) continue;
-      double sx = 0.0, sy = 0.0, sz = 0.0, sw = 0.0;
-      for (std::int32_t corner : rows.Row(node)) {
-        sw += element_weight[CornerElement(mesh, corner)];
-        sx += corner_xyz[3 * static_cast<std::int64_t>(corner) + 0];
-        sy += corner_xyz[3 * static_cast<std::int64_t>(corner) + 1];
-        sz += corner_xyz[3 * static_cast<std::int64_t>(corner) + 2];
-      }
-      // Σ w_j = 0: all adjacent elements are regular, the node is already optimal (Sec. 3.1).
-      if (sw > 0.0) {
-        x[node] = sx / sw;
-        y[node] = sy / sw;
-        z[node] = sz / sw;
-      }
-    }
-  });
+  context.pool.ParallelFor(mesh.node_count(), kNodeGrain,
+                           [&](std::int64_t begin, std::int64_t end) {
+                             for (std::int64_t node = begin; node < end; ++node) {
+                               if (!context.movable[node]) continue;
+                               double sx = 0.0, sy = 0.0, sz = 0.0, sw = 0.0;
+                               for (std::int32_t corner : rows.Row(node)) {
+                                 sw += element_weight[CornerElement(mesh, corner)];
+                                 sx += corner_xyz[3 * static_cast<std::int64_t>(corner) + 0];
+                                 sy += corner_xyz[3 * static_cast<std::int64_t>(corner) + 1];
+                                 sz += corner_xyz[3 * static_cast<std::int64_t>(corner) + 2];
+                               }
+                               // Σ w_j = 0: all adjacent elements are regular, the node is already
+                               // optimal (Sec. 3.1).
+                               if (sw > 0.0) {
+                                 x[node] = sx / sw;
+                                 y[node] = sy / sw;
+                                 z[node] = sz / sw;
+                               }
+                             }
+                           });
 }
 
 // Step 3: while elements are invalid, move their nodes back. With backtracking (the thin-layer
@@ -204,8 +206,8 @@ absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
     const bool converged =
         std::abs(current.q_mean - previous_q_mean) < params.simultaneous_tolerance;
     const bool last = converged || iteration == params.simultaneous_max_iterations;
-    context.Report({Phase::kSimultaneous, iteration, current.q_min, current.q_mean,
-                    current.invalid, reverted, context.ElapsedSeconds(), false});
+    context.Report({Phase::kSimultaneous, iteration, current.q_min, current.q_mean, current.invalid,
+                    reverted, context.ElapsedSeconds(), false});
     if (last) break;
   }
 

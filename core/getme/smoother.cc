@@ -16,10 +16,10 @@ namespace {
 absl::Status InvalidInput(const MeshQuality& quality) {
   std::vector<std::string> listed;
   for (ElementId e : quality.first_invalid) listed.push_back(absl::StrCat(e));
-  return absl::FailedPreconditionError(absl::StrCat(
-      "the mesh has ", quality.invalid, " invalid (inverted or degenerate) element",
-      quality.invalid == 1 ? "" : "s", ", first: ", absl::StrJoin(listed, ", "),
-      "; enable untangling or repair the mesh"));
+  return absl::FailedPreconditionError(
+      absl::StrCat("the mesh has ", quality.invalid, " invalid (inverted or degenerate) element",
+                   quality.invalid == 1 ? "" : "s", ", first: ", absl::StrJoin(listed, ", "),
+                   "; enable untangling or repair the mesh"));
 }
 
 absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {

@@ -36,15 +36,15 @@ double SmoothingContext::ElapsedSeconds() const {
 void SmoothingContext::RefreshQuality() {
   quality.resize(mesh.element_count());
   const Mesh& m = mesh;
-  ParallelForEachBlock(m, pool,
-                       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin,
-                                              std::int64_t end) {
-                         constexpr int kNodes = ElementTable<kType>::kNodes;
-                         for (std::int64_t i = begin; i < end; ++i) {
-                           quality[block.elements[i]] = MeanRatioOrInvalid<kType>(
-                               GatherNodes<kType>(m, block.nodes.data() + i * kNodes));
-                         }
-                       });
+  ParallelForEachBlock(
+      m, pool,
+      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
+        constexpr int kNodes = ElementTable<kType>::kNodes;
+        for (std::int64_t i = begin; i < end; ++i) {
+          quality[block.elements[i]] =
+              MeanRatioOrInvalid<kType>(GatherNodes<kType>(m, block.nodes.data() + i * kNodes));
+        }
+      });
 }
 
 SmoothingContext::Summary SmoothingContext::Summarize() const {

@@ -57,8 +57,8 @@ absl::StatusOr<Method> ParseMethod(std::string_view name) {
   }
   std::vector<std::string> names;
   for (const auto& entry : kMethodNames) names.push_back(entry.first);
-  return absl::InvalidArgumentError(absl::StrCat("unknown method '", std::string(name),
-                                                 "': expected one of ", absl::StrJoin(names, ", ")));
+  return absl::InvalidArgumentError(absl::StrCat(
+      "unknown method '", std::string(name), "': expected one of ", absl::StrJoin(names, ", ")));
 }
 
 absl::Status SmoothingParams::Validate() const {
@@ -74,9 +74,9 @@ absl::Status SmoothingParams::Validate() const {
       return s;
     }
     if (simultaneous_sigma_max[t] < simultaneous_sigma_min[t]) {
-      return OutOfRange("simultaneous_sigma_max" + suffix, simultaneous_sigma_max[t],
-                        absl::StrCat(">= simultaneous_sigma_min", suffix, " = ",
-                                     simultaneous_sigma_min[t]));
+      return OutOfRange(
+          "simultaneous_sigma_max" + suffix, simultaneous_sigma_max[t],
+          absl::StrCat(">= simultaneous_sigma_min", suffix, " = ", simultaneous_sigma_min[t]));
     }
     if (auto s = CheckPositive("sequential_sigma" + suffix, sequential_sigma[t]); !s.ok()) return s;
   }
@@ -85,9 +85,9 @@ absl::Status SmoothingParams::Validate() const {
     double value;
     bool allow_zero;
   };
-  for (const UnitField& field : {UnitField{"simultaneous_rho", simultaneous_rho, false},
-                                 UnitField{"sequential_rho", sequential_rho, false},
-                                 UnitField{"gamma", gamma, false}}) {
+  for (const UnitField& field :
+       {UnitField{"simultaneous_rho", simultaneous_rho, false},
+        UnitField{"sequential_rho", sequential_rho, false}, UnitField{"gamma", gamma, false}}) {
     if (auto s = CheckUnitInterval(field.name, field.value, field.allow_zero); !s.ok()) return s;
   }
   for (const auto& [name, value] :
@@ -101,13 +101,12 @@ absl::Status SmoothingParams::Validate() const {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
-  for (const auto& [name, value] :
-       {std::pair<absl::string_view, std::int64_t>{"simultaneous_max_iterations",
-                                                  simultaneous_max_iterations},
-        {"sequential_max_iterations", sequential_max_iterations},
-        {"sequential_stall_iterations", sequential_stall_iterations},
-        {"laplace_max_iterations", laplace_max_iterations},
-        {"untangle_max_iterations", untangle_max_iterations}}) {
+  for (const auto& [name, value] : {std::pair<absl::string_view, std::int64_t>{
+                                        "simultaneous_max_iterations", simultaneous_max_iterations},
+                                    {"sequential_max_iterations", sequential_max_iterations},
+                                    {"sequential_stall_iterations", sequential_stall_iterations},
+                                    {"laplace_max_iterations", laplace_max_iterations},
+                                    {"untangle_max_iterations", untangle_max_iterations}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {

@@ -11,7 +11,7 @@
 namespace getme {
 
 // τ of the base points a_k(τ) (eq. 5) for the triangular dual faces of pyramids and prisms.
-constexpr double kPrismTauScale = 0.8;                  // 4/5
+constexpr double kPrismTauScale = 0.8;                 // 4/5
 constexpr double kPrismTauSigma = 0.5659119256652702;  // √2 / 39^(1/4)
 
 // Def. 1: p'_k = b_k + σ n_k / sqrt(|n_k|) on the dual element (eq. 1) of E.

@@ -84,7 +84,8 @@ double Untangler::LocalLength(NodeId node) const {
   for (NodeId other : neighbours_.Row(node)) {
     sum += (Vec3(mesh_.x()[other], mesh_.y()[other], mesh_.z()[other]) - p).norm();
   }
-  return neighbours_.Row(node).empty() ? 0.0 : sum / static_cast<double>(neighbours_.Row(node).size());
+  return neighbours_.Row(node).empty() ? 0.0
+                                       : sum / static_cast<double>(neighbours_.Row(node).size());
 }
 
 bool Untangler::Repair(ElementId element) {
@@ -116,9 +117,9 @@ bool Untangler::Repair(ElementId element) {
   for (double rho : kRelaxations) {
     std::array<Vec3, kMaxElementNodes> moved;
     DispatchElementType(mesh_.type(element), [&]<ElementType kType>() {
-      const auto step = RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
-                                                context_.params.sequential_sigma[TypeIndex(kType)],
-                                                rho);
+      const auto step =
+          RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
+                                  context_.params.sequential_sigma[TypeIndex(kType)], rho);
       std::copy(step.begin(), step.end(), moved.begin());
     });
     candidates.emplace_back(moved, -1);

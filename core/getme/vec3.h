@@ -1,9 +1,8 @@
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
+#include <array>
 
 #include "getme/element_tables.h"
 #include "getme/mesh.h"

@@ -1,0 +1,71 @@
+// GETMe against Mesquite 2.99's feasible-Newton shape improvement on the shared meshes (reference
+// numbers from ../shared/meshes/README.md): at least Mesquite's q_min, q_mean within 0.01 of it.
+
+#include <gtest/gtest.h>
+
+#include "getme/smoother.h"
+#include "smoothing_test_support.h"
+
+namespace getme {
+namespace {
+
+struct MesquiteReference {
+  const char* file;
+  double q_min;
+  double q_mean;
+  std::int64_t invalid_before;
+};
+
+class MesquiteReferenceTest : public ::testing::TestWithParam<MesquiteReference> {};
+
+TEST_P(MesquiteReferenceTest, GetmeReachesMesquiteQuality) {
+  const MesquiteReference& reference = GetParam();
+  Mesh mesh = testing::LoadSharedMesh(reference.file);
+  SmoothingParams params;
+  params.threads = 2;
+  const std::vector<NodeId> immovable = testing::ImmovableNodes(mesh, params);
+  const testing::CoordinateSnapshot before(mesh);
+
+  auto result = Smooth(mesh, params);
+  ASSERT_TRUE(result.ok()) << result.status();
+
+  EXPECT_EQ(result->before.invalid, reference.invalid_before);
+  EXPECT_EQ(result->after.invalid, 0);
+  EXPECT_EQ(testing::CountInvalid(mesh), 0);
+  // The references are rounded to 4 digits: allow half a unit of the last digit.
+  EXPECT_GE(result->after.q_min, reference.q_min - 5e-5) << reference.file;
+  EXPECT_GE(result->after.q_mean, reference.q_mean - 0.01) << reference.file;
+  EXPECT_GT(result->after.q_mean, result->before.q_mean);
+  if (reference.invalid_before > 0) {
+    EXPECT_GT(result->iterations_untangle, 0);
+  }
+
+  const testing::CoordinateSnapshot after(mesh);
+  for (NodeId node : immovable) {
+    ASSERT_EQ(after.x[node], before.x[node]) << "fixed node " << node << " moved";
+    ASSERT_EQ(after.y[node], before.y[node]) << "fixed node " << node << " moved";
+    ASSERT_EQ(after.z[node], before.z[node]) << "fixed node " << node << " moved";
+  }
+  // The reported quality is that of the returned coordinates.
+  ThreadPool pool(1);
+  const MeshQuality recomputed = EvaluateMeshQuality(mesh, pool);
+  EXPECT_EQ(recomputed.q_min, result->after.q_min);
+  EXPECT_EQ(recomputed.q_mean, result->after.q_mean);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SharedMeshes, MesquiteReferenceTest,
+    ::testing::Values(MesquiteReference{"tire.vtk", 0.1637, 0.8109, 0},
+                      MesquiteReference{"flat-tet-sphere.vtk", 0.2851, 0.8450, 0},
+                      MesquiteReference{"cub_fru.vtk", 0.1973, 0.4310, 0},
+                      MesquiteReference{"mixed-hex-pyr-tet.vtk", 0.3707, 0.7883, 3}),
+    [](const auto& info) {
+      std::string name = info.param.file;
+      for (char& c : name) {
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      }
+      return name;
+    });
+
+}  // namespace
+}  // namespace getme

@@ -1,0 +1,45 @@
+#include "smoothing_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include "formats/vtk_mesh.h"
+#include "formats/vtk_reader.h"
+#include "getme/element_quality.h"
+
+namespace getme::testing {
+
+Mesh LoadSharedMesh(const std::string& name) {
+  const std::string path = std::string(GETME_SHARED_MESHES) + "/mesquite/" + name;
+  auto file = formats::ReadVtkFile(path);
+  EXPECT_TRUE(file.ok()) << file.status();
+  auto converted = formats::ToMesh(*file);
+  EXPECT_TRUE(converted.ok()) << converted.status();
+  return std::move(converted->mesh);
+}
+
+CoordinateSnapshot::CoordinateSnapshot(const Mesh& mesh)
+    : x(mesh.x().begin(), mesh.x().end()),
+      y(mesh.y().begin(), mesh.y().end()),
+      z(mesh.z().begin(), mesh.z().end()) {}
+
+std::vector<NodeId> ImmovableNodes(const Mesh& mesh, const SmoothingParams& params) {
+  std::vector<NodeId> nodes;
+  for (NodeId i = 0; i < mesh.node_count(); ++i) {
+    if (mesh.is_fixed(i) || (params.fix_boundary && mesh.is_boundary(i))) nodes.push_back(i);
+  }
+  return nodes;
+}
+
+std::int64_t CountInvalid(const Mesh& mesh) {
+  std::int64_t invalid = 0;
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    const NodeId* ids = mesh.element_nodes(e).data();
+    const bool valid = DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
+      return IsValid<kType>(GatherNodes<kType>(mesh, ids));
+    });
+    if (!valid) ++invalid;
+  }
+  return invalid;
+}
+
+}  // namespace getme::testing
