@@ -1,0 +1,169 @@
+// MeshBuilder::Build rejects malformed input with InvalidArgument and a message naming the element
+// (by insertion index and type) or node at fault.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "getme/mesh.h"
+
+namespace getme {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+// Nodes of the unit cube in hex order, so elements can be made from them.
+MeshBuilder CubeNodes() {
+  MeshBuilder builder;
+  const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (const auto& c : corners) builder.AddNode(c[0], c[1], c[2]);
+  return builder;
+}
+
+void AddElement(MeshBuilder& builder, ElementType type, std::vector<std::int64_t> nodes) {
+  builder.AddElement(type, nodes);
+}
+
+std::string Message(const absl::StatusOr<Mesh>& mesh) {
+  return std::string(mesh.status().message());
+}
+
+TEST(MeshBuilderErrors, NoNodesAndNoElementsIsAnEmptyMesh) {
+  const absl::StatusOr<Mesh> mesh = MeshBuilder().Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("empty mesh"), HasSubstr("0 nodes")));
+}
+
+TEST(MeshBuilderErrors, NodesWithoutElementsIsAnEmptyMesh) {
+  const absl::StatusOr<Mesh> mesh = CubeNodes().Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh),
+              AllOf(HasSubstr("empty mesh"), HasSubstr("8 nodes"), HasSubstr("0 volume elements")));
+}
+
+TEST(MeshBuilderErrors, ElementsWithoutNodesIsAnEmptyMesh) {
+  MeshBuilder builder;
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 2, 3});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("empty mesh"), HasSubstr("0 nodes")));
+}
+
+// The bad element is the third inserted but the second hexahedron: the message must use its
+// global (insertion) index, not its position in the hexahedron block.
+TEST(MeshBuilderErrors, NegativeNodeIdNamesElementLocalNodeAndId) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 3, 4});
+  AddElement(builder, ElementType::kHexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  AddElement(builder, ElementType::kHexahedron, {0, 1, 2, -1, 4, 5, 6, 7});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 2 (hexahedron)"), HasSubstr("node 3"),
+                                   HasSubstr("id -1"), HasSubstr("[0, 8)")));
+}
+
+TEST(MeshBuilderErrors, NodeIdEqualToNodeCountIsOutOfRange) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kPyramid, {0, 1, 2, 3, 8});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 0 (pyramid)"), HasSubstr("node 4"),
+                                   HasSubstr("id 8"), HasSubstr("out of range")));
+}
+
+TEST(MeshBuilderErrors, HugeNodeIdIsOutOfRangeNotTruncated) {
+  MeshBuilder builder = CubeNodes();
+  const std::int64_t huge = std::int64_t{1} << 32;  // would alias node 0 if cut to 32 bits
+  AddElement(builder, ElementType::kTetrahedron, {huge, 1, 3, 4});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 0 (tetrahedron)"), HasSubstr("node 0"),
+                                   HasSubstr("id 4294967296")));
+}
+
+TEST(MeshBuilderErrors, TooFewNodesForTheTypeNamesGivenAndExpectedCounts) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 3, 4});
+  AddElement(builder, ElementType::kPrism, {0, 1, 2, 4, 5});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 1 (prism)"), HasSubstr("has 5 nodes"),
+                                   HasSubstr("expected 6")));
+}
+
+TEST(MeshBuilderErrors, TooManyNodesForTheTypeNamesGivenAndExpectedCounts) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 3, 4, 5});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 0 (tetrahedron)"), HasSubstr("has 5 nodes"),
+                                   HasSubstr("expected 4")));
+}
+
+TEST(MeshBuilderErrors, RepeatedNodeNamesElementNodeAndBothLocalPositions) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kHexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  AddElement(builder, ElementType::kPyramid, {0, 3, 2, 1, 3});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 1 (pyramid)"), HasSubstr("node 3 twice"),
+                                   HasSubstr("local nodes 1 and 4")));
+}
+
+struct NonFiniteCase {
+  const char* name;
+  int axis;
+  double value;
+};
+
+class MeshBuilderNonFinite : public ::testing::TestWithParam<NonFiniteCase> {};
+
+TEST_P(MeshBuilderNonFinite, NamesTheNodeWithTheBadCoordinate) {
+  MeshBuilder builder = CubeNodes();
+  double p[3] = {2, 2, 2};
+  p[GetParam().axis] = GetParam().value;
+  builder.AddNode(p[0], p[1], p[2]);  // node 8
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 3, 4});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("node 8 "), HasSubstr("non-finite")));
+  // It is the unused node 8 that is at fault, not any element.
+  EXPECT_THAT(Message(mesh), Not(HasSubstr("element")));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Coordinates, MeshBuilderNonFinite,
+    ::testing::Values(NonFiniteCase{"NanX", 0, std::numeric_limits<double>::quiet_NaN()},
+                      NonFiniteCase{"NanZ", 2, std::numeric_limits<double>::quiet_NaN()},
+                      NonFiniteCase{"PlusInfY", 1, std::numeric_limits<double>::infinity()},
+                      NonFiniteCase{"MinusInfZ", 2, -std::numeric_limits<double>::infinity()}),
+    [](const ::testing::TestParamInfo<NonFiniteCase>& info) { return info.param.name; });
+
+TEST(MeshBuilderErrors, NegativeFixedNodeIdIsOutOfRange) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kHexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  builder.SetFixed(-1);
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("fixed node id -1"), HasSubstr("[0, 8)")));
+}
+
+TEST(MeshBuilderErrors, FixedNodeIdEqualToNodeCountIsOutOfRange) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kHexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  builder.SetFixed(3);
+  builder.SetFixed(8);
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("fixed node id 8"), HasSubstr("out of range")));
+}
+
+}  // namespace
+}  // namespace getme

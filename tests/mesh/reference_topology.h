@@ -1,0 +1,27 @@
+#pragma once
+
+// Brute-force topology of a MeshSpec, computed from the paper's face table (NOTES.md §2) typed in
+// here, independently of core/getme/mesh.cc and element_tables.h.
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh_spec.h"
+
+namespace getme::mesh_test {
+
+// Faces of one element type as local node lists (3 or 4 entries), NOTES.md §2 "F".
+const std::vector<std::vector<int>>& ReferenceFaces(ElementType type);
+
+struct ReferenceTopology {
+  std::vector<std::vector<std::int64_t>> node_elements;       // ascending
+  std::vector<std::vector<std::int64_t>> element_neighbours;  // ascending, without the element
+  std::vector<bool> boundary;                                 // per node
+  std::int64_t boundary_face_count = 0;
+};
+
+// Quadratic scans over all elements and faces; a face is identified by its node set, so a
+// triangle never matches a quad even when its three nodes belong to the quad.
+ReferenceTopology ComputeReferenceTopology(const MeshSpec& spec);
+
+}  // namespace getme::mesh_test
