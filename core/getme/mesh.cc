@@ -85,9 +85,7 @@ NodeId MeshBuilder::AddNode(double x, double y, double z) {
   return static_cast<NodeId>(mesh_.x_.size() - 1);
 }
 
-void MeshBuilder::SetFixed(NodeId node, bool fixed) {
-  if (fixed) pending_fixed_.push_back(node);
-}
+void MeshBuilder::SetFixed(NodeId node, bool fixed) { pending_fixed_.emplace_back(node, fixed); }
 
 void MeshBuilder::AddElement(ElementType type, std::span<const std::int64_t> nodes) {
   mesh_.element_type_.push_back(type);
@@ -116,12 +114,13 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
     }
   }
   mesh.fixed_.assign(node_count, 0);
-  for (std::int64_t node : pending_fixed_) {
+  // Applied in call order, so the last SetFixed of a node wins.
+  for (const auto& [node, fixed] : pending_fixed_) {
     if (node < 0 || node >= node_count) {
       return absl::InvalidArgumentError(
           absl::StrCat("fixed node id ", node, " out of range [0, ", node_count, ")"));
     }
-    mesh.fixed_[node] = 1;
+    mesh.fixed_[node] = fixed ? 1 : 0;
   }
 
   // Validate connectivity and sort elements into per-type blocks.

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -108,7 +109,7 @@ class MeshBuilder {
 
  private:
   Mesh mesh_;
-  std::vector<std::int64_t> pending_fixed_;
+  std::vector<std::pair<std::int64_t, bool>> pending_fixed_;
   std::vector<std::int64_t> raw_nodes_;  // flat, with per-element offsets below
   std::vector<std::int64_t> raw_offsets_{0};
 };
