@@ -36,12 +36,16 @@ build_dir="$(build_dir_for "$sanitizer")"
 
 bash "$GETME_ROOT/scripts/setup.sh"
 
-# Sanitizer builds keep -O2 but add debug info so reports name files and lines.
-build_type=Release
-[ -z "$sanitizer" ] || build_type=RelWithDebInfo
-
-configure=(cmake -S "$GETME_ROOT" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
-  -DGETME_SANITIZE="$sanitizer")
+configure=(cmake -S "$GETME_ROOT" -B "$build_dir" -DGETME_SANITIZE="$sanitizer")
+if [ -z "$sanitizer" ]; then
+  build_type=Release
+  configure+=(-DCMAKE_BUILD_TYPE=Release)
+else
+  # Debug info so reports name files and lines. -O1 compiles about 40 % faster than -O2 -g with
+  # sanitizers (measured on client/formats/vtk_reader.cc), and compiling is most of their time.
+  build_type="RelWithDebInfo, -O1"
+  configure+=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g -DNDEBUG")
+fi
 # A build directory configured earlier by hand keeps its generator; CMake refuses to switch.
 [ -f "$build_dir/CMakeCache.txt" ] || configure+=(-G Ninja)
 

@@ -25,19 +25,21 @@ failed=0
 run_stage() {
   local name="$1" sanitizer="$2"
   shift 2
-  local build_dir start result
+  local build_dir start build_seconds result
   build_dir="$(build_dir_for "$sanitizer")"
   start=$SECONDS
   result=passed
-  if ! bash "$GETME_ROOT/scripts/build.sh" ${sanitizer:+--sanitize "$sanitizer"}; then
+  bash "$GETME_ROOT/scripts/build.sh" ${sanitizer:+--sanitize "$sanitizer"} ||
     result="FAILED (build)"
-  else
+  build_seconds=$((SECONDS - start))
+  if [ "$result" = passed ]; then
     log "Testing $name ($build_dir${*:+, ctest $*})"
     run_instrumented "$sanitizer" ctest --test-dir "$build_dir" --output-on-failure \
       --no-tests=error --parallel "$(build_jobs)" "$@" || result="FAILED (tests)"
   fi
   [ "$result" = passed ] || failed=1
-  summary+=("$(printf '%-10s %-16s %5ds' "$name" "$result" $((SECONDS - start)))")
+  summary+=("$(printf '%-10s %-16s build %5ds  tests %5ds' "$name" "$result" "$build_seconds" \
+    $((SECONDS - start - build_seconds)))")
 }
 
 bash "$GETME_ROOT/scripts/setup.sh"
