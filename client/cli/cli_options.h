@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "formats/vtk_file.h"
+#include "getme/smoothing_params.h"
+
+namespace getme::cli {
+
+extern const char kMainUsage[];
+extern const char kSmoothUsage[];
+extern const char kQualityUsage[];
+
+struct SmoothCommandOptions {
+  bool help = false;
+  std::string input;
+  std::string output;
+  Method method = Method::kGetme;
+  int threads = 0;  // 0 = all cores
+  std::optional<std::int64_t> max_iterations;
+  bool free_boundary = false;
+  std::optional<formats::VtkEncoding> encoding;  // default: the input's
+  bool json = false;
+  bool quiet = false;
+};
+
+struct QualityCommandOptions {
+  bool help = false;
+  std::string input;
+  int bins = 20;
+  int threads = 0;
+  bool json = false;
+};
+
+// Parse the arguments after the command name. A usage error is InvalidArgument with a message
+// that names the offending argument; `--help` anywhere sets `help` and skips the checks.
+absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args);
+absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<std::string>& args);
+
+// The engine parameters the smooth options select: method, threads, fix_boundary, and the
+// iteration cap applied to every phase.
+SmoothingParams ToSmoothingParams(const SmoothCommandOptions& options);
+
+}  // namespace getme::cli

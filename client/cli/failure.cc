@@ -1,0 +1,20 @@
+#include "cli/failure.h"
+
+#include <cstdio>
+#include <string>
+
+#include "cli/json_events.h"
+
+namespace getme::cli {
+
+int ReportFailure(const absl::Status& status, bool json, int exit_status) {
+  std::fprintf(stderr, "getme: %s\n", std::string(status.message()).c_str());
+  std::fflush(stderr);
+  if (json) {
+    std::printf("%s\n", ErrorJson(status).c_str());
+    std::fflush(stdout);
+  }
+  return exit_status;
+}
+
+}  // namespace getme::cli

@@ -1,0 +1,47 @@
+#include "cli/quality_command.h"
+
+#include <cstdio>
+
+#include "absl/strings/str_cat.h"
+#include "cli/failure.h"
+#include "cli/json_events.h"
+#include "cli/text_reports.h"
+#include "formats/vtk_mesh.h"
+#include "formats/vtk_reader.h"
+#include "getme/mesh_quality.h"
+#include "getme/thread_pool.h"
+
+namespace getme::cli {
+
+int RunQualityCommand(const QualityCommandOptions& options) {
+  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(options.input);
+  if (!file.ok()) return ReportFailure(file.status(), options.json, kExitFailure);
+  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(*file);
+  if (!converted.ok()) {
+    return ReportFailure(
+        absl::Status(converted.status().code(),
+                     absl::StrCat(options.input, ": ", converted.status().message())),
+        options.json, kExitFailure);
+  }
+  ThreadPool pool(options.threads);
+  QualityOptions quality_options;
+  quality_options.histogram_bins = options.bins;
+
+  QualityReport report;
+  report.input = options.input;
+  report.nodes = converted->mesh.node_count();
+  report.passthrough_cells = file->cells.size() - converted->mesh.element_count();
+  report.quality = EvaluateMeshQuality(converted->mesh, pool, quality_options);
+  for (const ElementId element : report.quality.first_invalid) {
+    report.first_invalid_cells.push_back(converted->element_cells[element]);
+  }
+  if (options.json) {
+    std::printf("%s\n", QualityReportJson(report).c_str());
+  } else {
+    std::fputs(FormatQualityReport(report).c_str(), stdout);
+  }
+  std::fflush(stdout);
+  return kExitSuccess;
+}
+
+}  // namespace getme::cli

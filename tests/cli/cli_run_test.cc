@@ -1,0 +1,308 @@
+// Runs the built `getme` executable end to end: smoothing with JSON and human output, the written
+// file against an independent recomputation, `quality`, help, and the error paths.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "formats/vtk_mesh.h"
+#include "formats/vtk_reader.h"
+#include "getme/element_quality.h"
+#include "getme/vec3.h"
+#include "json_test_parser.h"
+#include "run_getme.h"
+
+namespace getme::cli {
+namespace {
+
+using testing::JsonValue;
+using testing::Lines;
+using testing::ParseJson;
+using testing::RunGetme;
+using testing::TempPath;
+
+std::string SharedMesh(const std::string& name) {
+  return std::string(GETME_SHARED_MESHES) + "/mesquite/" + name;
+}
+
+// Parses every stdout line as one JSON object; fails the test on any line that is not.
+std::vector<JsonValue> JsonLines(const std::string& out) {
+  std::vector<JsonValue> values;
+  for (const std::string& line : Lines(out)) {
+    std::optional<JsonValue> value = ParseJson(line);
+    EXPECT_TRUE(value.has_value()) << "not JSON: " << line;
+    if (!value) continue;
+    EXPECT_EQ(value->kind, JsonValue::Kind::kObject) << line;
+    values.push_back(*std::move(value));
+  }
+  return values;
+}
+
+double Number(const JsonValue& object, const std::string& key) {
+  const JsonValue* value = object.Find(key);
+  EXPECT_NE(value, nullptr) << "missing key " << key;
+  if (value == nullptr) return std::nan("");
+  EXPECT_EQ(value->kind, JsonValue::Kind::kNumber) << key;
+  return value->number;
+}
+
+std::string String(const JsonValue& object, const std::string& key) {
+  const JsonValue* value = object.Find(key);
+  EXPECT_NE(value, nullptr) << "missing key " << key;
+  return value != nullptr ? value->string : "";
+}
+
+// Per-element mean ratio of a file, recomputed from its coordinates with the core kernel.
+std::vector<double> RecomputedMeanRatios(const formats::VtkMesh& mesh) {
+  std::vector<double> quality;
+  for (ElementId e = 0; e < mesh.mesh.element_count(); ++e) {
+    quality.push_back(DispatchElementType(mesh.mesh.type(e), [&]<ElementType kType>() {
+      return MeanRatio<kType>(GatherNodes<kType>(mesh.mesh, mesh.mesh.element_nodes(e).data()));
+    }));
+  }
+  return quality;
+}
+
+TEST(CliSmooth, JsonLinesAndAVerifiableOutputFile) {
+  const std::string input = SharedMesh("1000hex-block-internal-bias.vtk");
+  const std::string output = TempPath("out.vtk");
+  const testing::RunResult run = RunGetme({"smooth", input, output, "--json", "--threads", "2"});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+
+  const std::vector<JsonValue> lines = JsonLines(run.out);
+  ASSERT_GE(lines.size(), 2u);
+  const std::set<std::string> phases = {"untangle", "simultaneous",  "sequential",
+                                        "warpage",  "smart-laplace", "laplace"};
+  int phase_ends = 0;
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    const JsonValue& event = lines[i];
+    ASSERT_EQ(String(event, "event"), "progress");
+    EXPECT_TRUE(phases.count(String(event, "phase")) == 1) << String(event, "phase");
+    for (const char* key :
+         {"iteration", "q_min", "q_mean", "invalid", "reverted_nodes", "elapsed_seconds"}) {
+      Number(event, key);
+    }
+    ASSERT_NE(event.Find("phase_done"), nullptr);
+    EXPECT_EQ(event.Find("phase_done")->kind, JsonValue::Kind::kBool);
+    phase_ends += event.Find("phase_done")->boolean ? 1 : 0;
+  }
+  EXPECT_EQ(phase_ends, 2);  // GETMe: simultaneous, then sequential
+
+  const JsonValue& result = lines.back();
+  ASSERT_EQ(String(result, "event"), "result");
+  for (const char* key :
+       {"nodes", "elements", "q_min_before", "q_mean_before", "q_min", "q_mean", "invalid",
+        "invalid_before", "iterations_untangle", "iterations_simultaneous", "iterations_sequential",
+        "iterations_laplace", "seconds", "threads"}) {
+    Number(result, key);
+  }
+  EXPECT_EQ(Number(result, "nodes"), 1331);
+  EXPECT_EQ(Number(result, "elements"), 1000);
+  EXPECT_EQ(Number(result, "threads"), 2);
+  EXPECT_EQ(String(result, "method"), "getme");
+  EXPECT_EQ(String(result, "output"), output);
+  EXPECT_GE(Number(result, "q_mean"), Number(result, "q_mean_before"));
+  EXPECT_GT(Number(result, "iterations_simultaneous"), 0);
+  EXPECT_EQ(Number(result, "invalid"), 0);
+
+  // The written file: same cells, fixed nodes unmoved, mean_ratio equal to a recomputation.
+  const absl::StatusOr<formats::VtkFile> before = formats::ReadVtkFile(input);
+  const absl::StatusOr<formats::VtkFile> after = formats::ReadVtkFile(output);
+  ASSERT_TRUE(before.ok() && after.ok()) << after.status();
+  EXPECT_EQ(after->encoding, formats::VtkEncoding::kAscii);  // the input's
+  EXPECT_EQ(after->cells.connectivity, before->cells.connectivity);
+  const formats::VtkDataArray* fixed = formats::FindArray(before->point_data, "fixed");
+  ASSERT_NE(fixed, nullptr);
+  std::int64_t moved_free_nodes = 0;
+  for (std::int64_t node = 0; node < before->point_count(); ++node) {
+    bool same = true;
+    for (int c = 0; c < 3; ++c) {
+      same = same && after->points.AsDouble(3 * node + c) == before->points.AsDouble(3 * node + c);
+    }
+    if (fixed->AsDouble(node) != 0.0) {
+      EXPECT_TRUE(same) << "fixed node " << node << " moved";
+    } else {
+      moved_free_nodes += same ? 0 : 1;
+    }
+  }
+  EXPECT_GT(moved_free_nodes, 0);
+
+  absl::StatusOr<formats::VtkMesh> mesh = formats::ToMesh(*after);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::vector<double> recomputed = RecomputedMeanRatios(*mesh);
+  const formats::VtkDataArray* mean_ratio = formats::FindArray(after->cell_data, "mean_ratio");
+  const formats::VtkDataArray* valid = formats::FindArray(after->cell_data, "valid");
+  ASSERT_NE(mean_ratio, nullptr);
+  ASSERT_NE(valid, nullptr);
+  ASSERT_EQ(mean_ratio->value_count(), 1000);
+  double sum = 0.0;
+  for (std::int64_t cell = 0; cell < 1000; ++cell) {
+    ASSERT_EQ(mean_ratio->AsDouble(cell), recomputed[cell]) << "cell " << cell;
+    EXPECT_EQ(valid->AsDouble(cell), 1.0);
+    sum += recomputed[cell];
+  }
+  EXPECT_EQ(Number(result, "q_min"), *std::min_element(recomputed.begin(), recomputed.end()));
+  EXPECT_NEAR(Number(result, "q_mean"), sum / 1000.0, 1e-12);
+  std::filesystem::remove(output);
+}
+
+TEST(CliSmooth, HumanModePrintsOneLinePerPhaseAndASummaryTable) {
+  const std::string output = TempPath("out.vtk");
+  const testing::RunResult run =
+      RunGetme({"smooth", SharedMesh("hexes_4by2by2.vtk"), output, "--binary"});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  // stderr is a file here, not a terminal: exactly one progress line per phase end.
+  int simultaneous_lines = 0;
+  int sequential_lines = 0;
+  for (const std::string& line : Lines(run.err)) {
+    EXPECT_EQ(line.find('\r'), std::string::npos);
+    simultaneous_lines += line.rfind("simultaneous", 0) == 0 ? 1 : 0;
+    sequential_lines += line.rfind("sequential", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(simultaneous_lines, 1) << run.err;
+  EXPECT_EQ(sequential_lines, 1) << run.err;
+  for (const char* row : {"before", "after", "nodes", "hexahedron", "q_min", "q_mean", "invalid",
+                          "warpage max", "warpage mean", "iterations", "seconds", "threads"}) {
+    EXPECT_NE(run.out.find(row), std::string::npos) << "missing '" << row << "' in\n" << run.out;
+  }
+  EXPECT_EQ(run.out.find('{'), std::string::npos);  // no JSON in human mode
+  const absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(output);
+  ASSERT_TRUE(file.ok()) << file.status();
+  EXPECT_EQ(file->encoding, formats::VtkEncoding::kBinary);
+  std::filesystem::remove(output);
+}
+
+TEST(CliSmooth, MaxIterationsCapsEveryPhase) {
+  const std::string output = TempPath("out.vtk");
+  const testing::RunResult run =
+      RunGetme({"smooth", SharedMesh("1000hex-block-internal-bias.vtk"), output, "--json",
+                "--max-iterations=3", "--method", "simultaneous", "--quiet"});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  EXPECT_EQ(run.err, "");  // --quiet
+  const std::vector<JsonValue> lines = JsonLines(run.out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(String(lines.back(), "method"), "simultaneous");
+  EXPECT_LE(Number(lines.back(), "iterations_simultaneous"), 3);
+  EXPECT_GE(Number(lines.back(), "iterations_simultaneous"), 1);
+  EXPECT_EQ(Number(lines.back(), "iterations_sequential"), 0);
+  std::filesystem::remove(output);
+}
+
+TEST(CliQuality, JsonReportsTheMixedMesh) {
+  const testing::RunResult run =
+      RunGetme({"quality", SharedMesh("mixed-hex-pyr-tet.vtk"), "--json", "--bins", "7"});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const std::vector<JsonValue> lines = JsonLines(run.out);
+  ASSERT_EQ(lines.size(), 1u);
+  const JsonValue& report = lines.front();
+  EXPECT_EQ(String(report, "event"), "quality");
+  EXPECT_EQ(Number(report, "nodes"), 683);
+  EXPECT_EQ(Number(report, "elements"), 940);
+  // meshes/README.md: tangled, 3 inverted elements, q_mean 0.7551.
+  EXPECT_EQ(Number(report, "invalid"), 3);
+  EXPECT_EQ(Number(report, "q_min"), 0.0);
+  EXPECT_NEAR(Number(report, "q_mean"), 0.7551, 5e-5);
+  const JsonValue* first_invalid = report.Find("first_invalid");
+  ASSERT_NE(first_invalid, nullptr);
+  EXPECT_EQ(first_invalid->array.size(), 3u);
+  const JsonValue* by_type = report.Find("by_type");
+  ASSERT_NE(by_type, nullptr);
+  EXPECT_EQ(Number(*by_type->Find("tetrahedron"), "count"), 445);
+  EXPECT_EQ(Number(*by_type->Find("hexahedron"), "count"), 305);
+  EXPECT_EQ(Number(*by_type->Find("pyramid"), "count"), 190);
+  EXPECT_EQ(Number(*by_type->Find("prism"), "count"), 0);
+  const JsonValue* histogram = report.Find("histogram");
+  ASSERT_NE(histogram, nullptr);
+  ASSERT_EQ(histogram->array.size(), 7u);
+  double total = 0;
+  for (const JsonValue& bin : histogram->array) total += bin.number;
+  EXPECT_EQ(total, 940);
+  for (const char* key : {"warpage_max", "warpage_mean"}) Number(report, key);
+}
+
+TEST(CliQuality, HumanReportListsTypesAndHistogram) {
+  const testing::RunResult run = RunGetme({"quality", SharedMesh("6-wedge-prism.vtk")});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  EXPECT_NE(run.out.find("6 prisms"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("histogram"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("invalid elements"), std::string::npos) << run.out;
+}
+
+TEST(CliErrors, MissingInputFileExitsOne) {
+  const testing::RunResult run =
+      RunGetme({"smooth", "/nonexistent/in.vtk", TempPath("out.vtk"), "--json"});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_EQ(run.err.rfind("getme: cannot open '/nonexistent/in.vtk'", 0), 0u) << run.err;
+  const std::vector<JsonValue> lines = JsonLines(run.out);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(String(lines[0], "event"), "error");
+  EXPECT_EQ(String(lines[0], "code"), "NOT_FOUND");
+  EXPECT_NE(String(lines[0], "message").find("/nonexistent/in.vtk"), std::string::npos);
+}
+
+TEST(CliErrors, BadMethodIsAUsageError) {
+  const testing::RunResult run =
+      RunGetme({"smooth", SharedMesh("tet_1.vtk"), TempPath("out.vtk"), "--method", "newton"});
+  EXPECT_EQ(run.exit_status, 2);
+  EXPECT_EQ(run.err.rfind("getme: unknown method 'newton'", 0), 0u) << run.err;
+  EXPECT_EQ(run.out, "");
+}
+
+TEST(CliErrors, UsageErrors) {
+  EXPECT_EQ(RunGetme({}).exit_status, 2);
+  const testing::RunResult unknown_command = RunGetme({"smoothen", "a.vtk"});
+  EXPECT_EQ(unknown_command.exit_status, 2);
+  EXPECT_NE(unknown_command.err.find("unknown command 'smoothen'"), std::string::npos);
+  const testing::RunResult unknown_flag = RunGetme({"quality", "a.vtk", "--fast"});
+  EXPECT_EQ(unknown_flag.exit_status, 2);
+  EXPECT_NE(unknown_flag.err.find("unknown option '--fast' for 'getme quality'"), std::string::npos)
+      << unknown_flag.err;
+  const testing::RunResult one_file = RunGetme({"smooth", "a.vtk"});
+  EXPECT_EQ(one_file.exit_status, 2);
+  EXPECT_NE(one_file.err.find("needs an input and an output file"), std::string::npos);
+  const testing::RunResult bad_threads = RunGetme({"smooth", "a.vtk", "b.vtk", "--threads", "x"});
+  EXPECT_EQ(bad_threads.exit_status, 2);
+  EXPECT_NE(bad_threads.err.find("option --threads expects an integer in [0, 1024], got 'x'"),
+            std::string::npos)
+      << bad_threads.err;
+}
+
+TEST(CliErrors, SurfaceMeshIsRefusedClearly) {
+  const testing::RunResult run = RunGetme({"quality", SharedMesh("sph-10-zsquare.vtk")});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_NE(run.err.find("no volume elements: the file has 216 quad cells (VTK type 9)"),
+            std::string::npos)
+      << run.err;
+}
+
+TEST(CliErrors, UnwritableOutputExitsOneAndNamesThePath) {
+  const testing::RunResult run =
+      RunGetme({"smooth", SharedMesh("tet_1.vtk"), "/nonexistent/dir/out.vtk", "--quiet"});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_EQ(run.err.rfind("getme: cannot write '/nonexistent/dir/out.vtk'", 0), 0u) << run.err;
+  EXPECT_EQ(run.out, "");
+}
+
+TEST(CliHelp, HelpTextsExitZero) {
+  const testing::RunResult main_help = RunGetme({"--help"});
+  EXPECT_EQ(main_help.exit_status, 0);
+  EXPECT_NE(main_help.out.find("getme smooth IN.vtk OUT.vtk"), std::string::npos);
+  const testing::RunResult smooth_help = RunGetme({"smooth", "--help"});
+  EXPECT_EQ(smooth_help.exit_status, 0);
+  EXPECT_NE(smooth_help.out.find("Usage: getme smooth IN.vtk OUT.vtk [options]"),
+            std::string::npos);
+  for (const char* flag : {"--method", "--threads", "--max-iterations", "--free-boundary",
+                           "--binary", "--ascii", "--json"}) {
+    EXPECT_NE(smooth_help.out.find(flag), std::string::npos) << flag;
+  }
+  const testing::RunResult quality_help = RunGetme({"quality", "-h"});
+  EXPECT_EQ(quality_help.exit_status, 0);
+  EXPECT_NE(quality_help.out.find("--bins N"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace getme::cli
