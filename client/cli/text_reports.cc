@@ -85,8 +85,9 @@ std::string FormatQualityReport(const QualityReport& report) {
   for (const ElementType type : kAllElementTypes) {
     counts[TypeIndex(type)] = quality.by_type[TypeIndex(type)].count;
   }
-  std::string out = absl::StrFormat("%s: %d nodes, %d elements (%s)", report.input, report.nodes,
-                                    quality.elements, TypeCountsText(counts));
+  std::string out =
+      absl::StrFormat("%s: %d nodes, %d element%s (%s)", report.input, report.nodes,
+                      quality.elements, quality.elements == 1 ? "" : "s", TypeCountsText(counts));
   if (report.passthrough_cells > 0) {
     absl::StrAppendFormat(&out, ", %d passthrough cells", report.passthrough_cells);
   }
