@@ -1,0 +1,199 @@
+#include "getme/meshgen/gmsh_tet_vessel.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "absl/container/flat_hash_map.h"
+#include "absl/strings/str_cat.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+// gmsh 4.8 leaks a few kB of surface-meshing scratch per run (allocated under meshGFace and never
+// freed, also after gmsh::finalize), which LeakSanitizer would report at the exit of every program
+// that builds a vessel. The leak is inside libgmsh, so only its frames are suppressed. ASan calls
+// this hook once at start-up; a program defining its own must add this line to it.
+extern "C" const char* __lsan_default_suppressions() { return "leak:libgmsh.so\n"; }
+#endif
+
+namespace getme::meshgen {
+namespace {
+
+constexpr int kGmshTriangle = 2;
+constexpr int kGmshTetrahedron = 4;
+constexpr int kGmshDelaunay3d = 1;
+
+// gmsh keeps one global model; concurrent callers would mesh into each other's geometry.
+std::mutex& GmshMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+// Initialises gmsh for one meshing run and always finalises it, also when gmsh throws.
+class GmshSession {
+ public:
+  GmshSession() {
+    // No config files: a user's ~/.gmshrc must not change the mesh.
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+struct RawGmshMesh {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> node_coords;
+  std::vector<std::size_t> tet_nodes;   // 4 tags per tetrahedron
+  std::vector<std::size_t> wall_nodes;  // 3 tags per lateral wall triangle
+};
+
+void GenerateWithGmsh(const ThinPrismVesselOptions& options, RawGmshMesh& raw) {
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.NumThreads", 1);
+  gmsh::option::setNumber("Mesh.Algorithm3D", kGmshDelaunay3d);
+  gmsh::option::setNumber("Mesh.RandomSeed", static_cast<double>(options.seed % (1u << 30)));
+  gmsh::option::setNumber("Mesh.MeshSizeMin", options.mesh_size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", options.mesh_size);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::model::add("vessel");
+  if (options.bend_angle > 0.0) {
+    // A torus section around the z axis: its centreline is an arc of the given length.
+    gmsh::model::occ::addTorus(0, 0, 0, options.length / options.bend_angle, options.radius, -1,
+                               options.bend_angle);
+  } else {
+    gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, options.length, options.radius);
+  }
+  gmsh::model::occ::synchronize();
+  gmsh::model::mesh::generate(3);
+
+  std::vector<double> parametric;
+  gmsh::model::mesh::getNodes(raw.node_tags, raw.node_coords, parametric, -1, -1,
+                              /*includeBoundary=*/false, /*returnParametricCoord=*/false);
+  // Fresh output vectors for every call: gmsh 4.8 returned no triangles into a vector that still
+  // held the tetrahedra's tags (it takes non-empty vectors as preallocated storage).
+  std::vector<std::size_t> tet_tags;
+  gmsh::model::mesh::getElementsByType(kGmshTetrahedron, tet_tags, raw.tet_nodes);
+  // The end caps are the planar surfaces; everything else (cylinder or torus) is the wall.
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  for (const auto& [dim, tag] : surfaces) {
+    std::string type;
+    gmsh::model::getType(dim, tag, type);
+    if (type == "Plane") continue;
+    std::vector<std::size_t> triangle_tags, triangle_nodes;
+    gmsh::model::mesh::getElementsByType(kGmshTriangle, triangle_tags, triangle_nodes, tag);
+    raw.wall_nodes.insert(raw.wall_nodes.end(), triangle_nodes.begin(), triangle_nodes.end());
+  }
+}
+
+// Runs GenerateWithGmsh in its own gmsh session, one caller at a time.
+absl::Status RunGmsh(const ThinPrismVesselOptions& options, RawGmshMesh& raw) {
+  std::lock_guard<std::mutex> lock(GmshMutex());
+  try {
+    GmshSession session;
+    try {
+      GenerateWithGmsh(options, raw);
+    } catch (...) {
+      // gmsh's API throws without a message of its own; its logger keeps the last error, and
+      // must be read before the session finalises gmsh.
+      std::string error;
+      gmsh::logger::getLastError(error);
+      return absl::InternalError(absl::StrCat("ThinPrismVessel: gmsh failed to mesh the vessel: ",
+                                              error.empty() ? "no message" : error));
+    }
+  } catch (...) {
+    return absl::InternalError("ThinPrismVessel: gmsh failed to start or to shut down");
+  }
+  return absl::OkStatus();
+}
+
+std::array<NodeId, 3> SortedTriangle(NodeId a, NodeId b, NodeId c) {
+  std::array<NodeId, 3> key = {a, b, c};
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+}  // namespace
+
+absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, MeshDraft& draft) {
+  RawGmshMesh raw;
+  if (absl::Status status = RunGmsh(options, raw); !status.ok()) return status;
+  // Meshing failures that gmsh only logs (it does not throw unless General.AbortOnError) show up
+  // as an empty mesh.
+  if (raw.tet_nodes.empty() || raw.wall_nodes.empty()) {
+    return absl::InternalError(absl::StrCat("ThinPrismVessel: gmsh produced ",
+                                            raw.tet_nodes.size() / 4, " tetrahedra and ",
+                                            raw.wall_nodes.size() / 3, " wall triangles"));
+  }
+
+  // Keep only nodes the tetrahedra use, in ascending tag order.
+  std::vector<std::size_t> used_tags = raw.tet_nodes;
+  std::sort(used_tags.begin(), used_tags.end());
+  used_tags.erase(std::unique(used_tags.begin(), used_tags.end()), used_tags.end());
+  absl::flat_hash_map<std::size_t, std::size_t> coord_index;
+  for (std::size_t n = 0; n < raw.node_tags.size(); ++n) coord_index[raw.node_tags[n]] = n;
+  absl::flat_hash_map<std::size_t, NodeId> node_of_tag;
+  for (const std::size_t tag : used_tags) {
+    const auto it = coord_index.find(tag);
+    if (it == coord_index.end()) {
+      return absl::InternalError(
+          absl::StrCat("ThinPrismVessel: gmsh tetrahedron uses unknown node tag ", tag));
+    }
+    const double* p = &raw.node_coords[3 * it->second];
+    node_of_tag[tag] = draft.AddNode(Vec3(p[0], p[1], p[2]));
+  }
+
+  // Tetrahedra, oriented valid; remember each face's opposite node to orient the wall outward.
+  absl::flat_hash_map<std::array<NodeId, 3>, NodeId> opposite_of_face;
+  constexpr std::array<std::array<int, 4>, 4> kFaceAndOpposite = {
+      {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 3, 1}, {1, 2, 3, 0}}};
+  for (std::size_t t = 0; t < raw.tet_nodes.size(); t += 4) {
+    std::array<NodeId, 4> tet;
+    for (int k = 0; k < 4; ++k) tet[k] = node_of_tag.at(raw.tet_nodes[t + k]);
+    const Vec3 p0 = draft.node(tet[0]);
+    const double det =
+        (draft.node(tet[1]) - p0).dot((draft.node(tet[2]) - p0).cross(draft.node(tet[3]) - p0));
+    if (det < 0.0) std::swap(tet[1], tet[2]);
+    const ElementId element = draft.AddElement(ElementType::kTetrahedron, tet);
+    if (!draft.IsElementValid(element)) {
+      return absl::InternalError(absl::StrCat("ThinPrismVessel: gmsh tetrahedron ", t / 4,
+                                              " is degenerate (volume ", det / 6.0, ")"));
+    }
+    for (const auto& f : kFaceAndOpposite) {
+      opposite_of_face[SortedTriangle(tet[f[0]], tet[f[1]], tet[f[2]])] = tet[f[3]];
+    }
+  }
+
+  TetVessel vessel;
+  vessel.wall_triangles.reserve(raw.wall_nodes.size() / 3);
+  for (std::size_t w = 0; w < raw.wall_nodes.size(); w += 3) {
+    std::array<NodeId, 3> triangle;
+    for (int k = 0; k < 3; ++k) {
+      const auto it = node_of_tag.find(raw.wall_nodes[w + k]);
+      if (it == node_of_tag.end()) {
+        return absl::InternalError(absl::StrCat("ThinPrismVessel: wall triangle ", w / 3,
+                                                " uses node tag ", raw.wall_nodes[w + k],
+                                                " that no tetrahedron uses"));
+      }
+      triangle[k] = it->second;
+    }
+    const auto opposite =
+        opposite_of_face.find(SortedTriangle(triangle[0], triangle[1], triangle[2]));
+    if (opposite == opposite_of_face.end()) {
+      return absl::InternalError(absl::StrCat("ThinPrismVessel: wall triangle ", w / 3,
+                                              " is not a face of any tetrahedron"));
+    }
+    // Counter-clockwise seen from outside: the normal points away from the tetrahedron.
+    const Vec3 a = draft.node(triangle[0]);
+    const Vec3 normal = (draft.node(triangle[1]) - a).cross(draft.node(triangle[2]) - a);
+    if (normal.dot(draft.node(opposite->second) - a) > 0.0) std::swap(triangle[1], triangle[2]);
+    vessel.wall_triangles.push_back(triangle);
+  }
+  return vessel;
+}
+
+}  // namespace getme::meshgen

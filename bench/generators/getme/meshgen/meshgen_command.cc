@@ -1,0 +1,130 @@
+#include "getme/meshgen/meshgen_command.h"
+
+#include <vector>
+
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_split.h"
+#include "getme/meshgen/distorted_hex_block.h"
+#include "getme/meshgen/hybrid_block.h"
+#include "getme/meshgen/jittered_tet_block.h"
+
+namespace getme::meshgen {
+namespace {
+
+absl::StatusOr<MeshKind> ParseKind(const std::string& kind) {
+  if (kind == "hex") return MeshKind::kHexBlock;
+  if (kind == "tet") return MeshKind::kTetBlock;
+  if (kind == "hybrid") return MeshKind::kHybridBlock;
+  if (kind == "vessel") return MeshKind::kVessel;
+  return absl::InvalidArgumentError(
+      absl::StrCat("unknown mesh kind '", kind, "'; expected hex, tet, hybrid or vessel"));
+}
+
+absl::Status ParseSize(const std::string& flag, const std::string& value, MeshgenCommand& command) {
+  const std::vector<std::string> parts = absl::StrSplit(value, ',');
+  std::vector<int> sizes;
+  for (const std::string& part : parts) {
+    int size = 0;
+    if (!absl::SimpleAtoi(part, &size)) {
+      return absl::InvalidArgumentError(
+          absl::StrCat(flag, ": '", value, "' is not N or NX,NY,NZ (integers)"));
+    }
+    sizes.push_back(size);
+  }
+  if (sizes.size() == 1) sizes.assign(3, sizes[0]);
+  if (sizes.size() != 3) {
+    return absl::InvalidArgumentError(
+        absl::StrCat(flag, ": '", value, "' has ", parts.size(), " values; expected 1 or 3"));
+  }
+  command.nx = sizes[0];
+  command.ny = sizes[1];
+  command.nz = sizes[2];
+  return absl::OkStatus();
+}
+
+template <typename T>
+absl::Status ParseNumber(const std::string& flag, const std::string& value, T& out) {
+  bool ok = false;
+  if constexpr (std::is_same_v<T, double>) {
+    ok = absl::SimpleAtod(value, &out);
+  } else {
+    ok = absl::SimpleAtoi(value, &out);
+  }
+  if (!ok) {
+    return absl::InvalidArgumentError(absl::StrCat(flag, ": '", value, "' is not a number"));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> args) {
+  std::vector<std::string> positional;
+  MeshgenCommand command;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (!arg.starts_with("--")) {
+      positional.push_back(arg);
+      continue;
+    }
+    if (arg == "--binary") {
+      command.binary = true;
+      continue;
+    }
+    if (i + 1 == args.size()) {
+      return absl::InvalidArgumentError(absl::StrCat(arg, " needs a value"));
+    }
+    const std::string& value = args[++i];
+    absl::Status status;
+    if (arg == "--size") {
+      status = ParseSize(arg, value, command);
+    } else if (arg == "--distortion") {
+      status = ParseNumber(arg, value, command.distortion);
+    } else if (arg == "--seed") {
+      status = ParseNumber(arg, value, command.seed);
+    } else if (arg == "--mesh-size") {
+      status = ParseNumber(arg, value, command.vessel.mesh_size);
+    } else if (arg == "--radius") {
+      status = ParseNumber(arg, value, command.vessel.radius);
+    } else if (arg == "--length") {
+      status = ParseNumber(arg, value, command.vessel.length);
+    } else if (arg == "--bend-angle") {
+      status = ParseNumber(arg, value, command.vessel.bend_angle);
+    } else if (arg == "--layers") {
+      status = ParseNumber(arg, value, command.vessel.layers);
+    } else if (arg == "--layer-height-ratio") {
+      status = ParseNumber(arg, value, command.vessel.layer_height_ratio);
+    } else {
+      return absl::InvalidArgumentError(absl::StrCat("unknown option ", arg));
+    }
+    if (!status.ok()) return status;
+  }
+  if (positional.size() != 2) {
+    return absl::InvalidArgumentError(absl::StrCat("expected KIND and OUT.vtk, got ",
+                                                   positional.size(), " positional arguments"));
+  }
+  absl::StatusOr<MeshKind> kind = ParseKind(positional[0]);
+  if (!kind.ok()) return kind.status();
+  command.kind = *kind;
+  command.output_path = positional[1];
+  command.vessel.seed = command.seed;
+  return command;
+}
+
+absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
+  switch (command.kind) {
+    case MeshKind::kHexBlock:
+      return DistortedHexBlock(command.nx, command.ny, command.nz, command.distortion,
+                               command.seed);
+    case MeshKind::kTetBlock:
+      return JitteredTetBlock(command.nx, command.ny, command.nz, command.distortion, command.seed);
+    case MeshKind::kHybridBlock:
+      return HybridBlock(command.nx, command.ny, command.nz, command.distortion, command.seed);
+    case MeshKind::kVessel:
+      return ThinPrismVessel(command.vessel);
+  }
+  return absl::InternalError("GenerateMesh: unhandled mesh kind");
+}
+
+}  // namespace getme::meshgen

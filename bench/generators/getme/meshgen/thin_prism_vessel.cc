@@ -1,0 +1,59 @@
+#include "getme/meshgen/thin_prism_vessel.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "absl/strings/str_cat.h"
+#include "getme/meshgen/gmsh_tet_vessel.h"
+#include "getme/meshgen/mesh_draft.h"
+#include "getme/meshgen/prism_layer_extrusion.h"
+
+namespace getme::meshgen {
+namespace {
+
+absl::Status ValidateOptions(const ThinPrismVesselOptions& options) {
+  const auto positive = [](double value) { return std::isfinite(value) && value > 0.0; };
+  if (!positive(options.radius) || !positive(options.length) || !positive(options.mesh_size)) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "ThinPrismVessel: radius, length and mesh_size must be finite and > 0, got radius=",
+        options.radius, " length=", options.length, " mesh_size=", options.mesh_size));
+  }
+  if (!(options.bend_angle >= 0.0 && options.bend_angle < 2.0 * std::numbers::pi)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("ThinPrismVessel: bend_angle must be in [0, 2π), got ", options.bend_angle));
+  }
+  if (options.bend_angle > 0.0 && options.length / options.bend_angle <= options.radius) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "ThinPrismVessel: the bend's centreline radius length/bend_angle = ",
+        options.length / options.bend_angle, " must exceed the vessel radius ", options.radius));
+  }
+  if (options.layers < 0) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("ThinPrismVessel: layers must be >= 0, got ", options.layers));
+  }
+  if (!positive(options.layer_height_ratio)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("ThinPrismVessel: layer_height_ratio must be finite and > 0, got ",
+                     options.layer_height_ratio));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::StatusOr<Mesh> ThinPrismVessel(const ThinPrismVesselOptions& options) {
+  if (absl::Status status = ValidateOptions(options); !status.ok()) return status;
+  MeshDraft draft;
+  absl::StatusOr<TetVessel> vessel = MeshTetVessel(options, draft);
+  if (!vessel.ok()) return vessel.status();
+  const double layer_height =
+      options.layer_height_ratio * MeanEdgeLength(draft, vessel->wall_triangles);
+  if (absl::Status status =
+          ExtrudePrismLayers(draft, vessel->wall_triangles, options.layers, layer_height);
+      !status.ok()) {
+    return status;
+  }
+  return draft.Build();
+}
+
+}  // namespace getme::meshgen

@@ -1,0 +1,43 @@
+#pragma once
+
+// Independent checks of generated meshes: validity, per-element mean ratio and face conformity,
+// computed from the element tables (NOTES.md §2) without the engine's topology code.
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "getme/mesh.h"
+#include "getme/vec3.h"
+
+namespace getme::testing {
+
+// A face of the mesh: its nodes in the owning element's face-table order (of the first element
+// that has it) and every element that has it.
+struct FaceUse {
+  std::vector<NodeId> nodes;
+  std::vector<ElementId> elements;
+};
+// Keyed by the face's node ids in ascending order; triangles and quads never share a key.
+using FaceCensus = std::map<std::vector<NodeId>, FaceUse>;
+FaceCensus CensusFaces(const Mesh& mesh);
+
+std::vector<ElementId> InvalidElements(const Mesh& mesh);
+std::vector<double> MeanRatios(const Mesh& mesh);
+Vec3 NodePosition(const Mesh& mesh, NodeId node);
+// Area of a planar triangle or (as two triangles) quad.
+double FaceArea(const Mesh& mesh, const std::vector<NodeId>& nodes);
+
+struct BlockFaceReport {
+  std::int64_t shared_faces = 0;          // faces of exactly two elements
+  std::int64_t boundary_faces = 0;        // faces of exactly one element
+  std::int64_t overused_faces = 0;        // faces of three or more elements
+  std::int64_t inner_boundary_faces = 0;  // single-element faces not lying on the box surface
+  double boundary_area = 0.0;             // total area of the single-element faces
+};
+// Conformity of a mesh of the box [0,nx]×[0,ny]×[0,nz]: a face is on the box surface when all its
+// nodes lie exactly on one of the six planes (generators never move boundary nodes).
+BlockFaceReport CheckBlockFaces(const Mesh& mesh, int nx, int ny, int nz);
+
+}  // namespace getme::testing

@@ -1,0 +1,66 @@
+#include "getme/meshgen/meshgen_command.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace getme::meshgen {
+namespace {
+
+absl::StatusOr<MeshgenCommand> Parse(std::vector<std::string> args) {
+  return ParseMeshgenCommand(args);
+}
+
+TEST(MeshgenCommandTest, ParsesKindPathSizeAndSeed) {
+  absl::StatusOr<MeshgenCommand> command =
+      Parse({"hybrid", "out.vtk", "--size", "7,6,9", "--seed", "42", "--distortion", "0.25"});
+  ASSERT_TRUE(command.ok()) << command.status();
+  EXPECT_EQ(command->kind, MeshKind::kHybridBlock);
+  EXPECT_EQ(command->output_path, "out.vtk");
+  EXPECT_EQ(command->nx, 7);
+  EXPECT_EQ(command->ny, 6);
+  EXPECT_EQ(command->nz, 9);
+  EXPECT_EQ(command->seed, 42u);
+  EXPECT_EQ(command->distortion, 0.25);
+  EXPECT_FALSE(command->binary);
+}
+
+TEST(MeshgenCommandTest, SingleSizeAppliesToAllAxesAndVesselOptionsArePassedOn) {
+  absl::StatusOr<MeshgenCommand> command =
+      Parse({"--size", "5", "vessel", "v.vtk", "--mesh-size", "0.3", "--layers", "4",
+             "--layer-height-ratio", "0.02", "--bend-angle", "0.5", "--seed", "9", "--binary"});
+  ASSERT_TRUE(command.ok()) << command.status();
+  EXPECT_EQ(command->kind, MeshKind::kVessel);
+  EXPECT_EQ(command->nx, 5);
+  EXPECT_EQ(command->nz, 5);
+  EXPECT_EQ(command->vessel.mesh_size, 0.3);
+  EXPECT_EQ(command->vessel.layers, 4);
+  EXPECT_EQ(command->vessel.layer_height_ratio, 0.02);
+  EXPECT_EQ(command->vessel.bend_angle, 0.5);
+  EXPECT_EQ(command->vessel.seed, 9u);
+  EXPECT_TRUE(command->binary);
+}
+
+TEST(MeshgenCommandTest, ErrorsNameTheOffendingArgument) {
+  const auto message = [](std::vector<std::string> args) {
+    return std::string(Parse(std::move(args)).status().message());
+  };
+  EXPECT_NE(message({"cube", "o.vtk"}).find("'cube'"), std::string::npos);
+  EXPECT_NE(message({"hex", "o.vtk", "--size", "3,x,4"}).find("--size"), std::string::npos);
+  EXPECT_NE(message({"hex", "o.vtk", "--size", "3,4"}).find("expected 1 or 3"), std::string::npos);
+  EXPECT_NE(message({"hex", "o.vtk", "--seed"}).find("--seed needs a value"), std::string::npos);
+  EXPECT_NE(message({"hex", "o.vtk", "--colour", "red"}).find("--colour"), std::string::npos);
+  EXPECT_NE(message({"hex"}).find("KIND and OUT.vtk"), std::string::npos);
+}
+
+TEST(MeshgenCommandTest, GeneratesTheRequestedBlock) {
+  absl::StatusOr<MeshgenCommand> command = Parse({"tet", "t.vtk", "--size", "2,3,4"});
+  ASSERT_TRUE(command.ok()) << command.status();
+  absl::StatusOr<Mesh> mesh = GenerateMesh(*command);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  EXPECT_EQ(mesh->element_count(ElementType::kTetrahedron), 6 * 2 * 3 * 4);
+}
+
+}  // namespace
+}  // namespace getme::meshgen
