@@ -37,6 +37,8 @@ Options:
   --max-iterations N   cap on the iterations of every phase (untangle, simultaneous,
                        sequential, Laplace)
   --free-boundary      let boundary nodes move too
+  --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
+  --no-untangle        refuse a mesh with invalid elements instead of untangling it
   --binary, --ascii    output encoding (default: the input's)
   --json               one JSON object per line on stdout: progress events, then the result
   --quiet              no progress or log lines on stderr (errors are still reported)
@@ -157,6 +159,8 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
        {true,
         IntegerFlag<std::int64_t>("--max-iterations", max_iterations, 1, std::int64_t{1} << 40)}},
       {"--free-boundary", {false, SetTrue(options.free_boundary)}},
+      {"--literal", {false, SetTrue(options.literal)}},
+      {"--no-untangle", {false, SetTrue(options.no_untangle)}},
       {"--binary", {false, SetTrue(binary)}},
       {"--ascii", {false, SetTrue(ascii)}},
       {"--json", {false, SetTrue(options.json)}},
@@ -210,6 +214,8 @@ SmoothingParams ToSmoothingParams(const SmoothCommandOptions& options) {
   params.method = options.method;
   params.threads = options.threads;
   params.fix_boundary = !options.free_boundary;
+  params.untangle = !options.no_untangle;
+  if (options.literal) params.UseLiteralPaperAlgorithm();
   if (options.max_iterations) {
     params.untangle_max_iterations = *options.max_iterations;
     params.simultaneous_max_iterations = *options.max_iterations;

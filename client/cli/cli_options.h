@@ -23,6 +23,8 @@ struct SmoothCommandOptions {
   int threads = 0;  // 0 = all cores
   std::optional<std::int64_t> max_iterations;
   bool free_boundary = false;
+  bool literal = false;                          // the paper's literal algorithm, safeguards off
+  bool no_untangle = false;                      // refuse invalid input instead of untangling it
   std::optional<formats::VtkEncoding> encoding;  // default: the input's
   bool json = false;
   bool quiet = false;

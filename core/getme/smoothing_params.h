@@ -85,6 +85,15 @@ struct SmoothingParams {
   int threads = 0;           // 0 = hardware concurrency; results do not depend on it
 
   absl::Status Validate() const;
+
+  // Switches off every safeguard that goes beyond the paper (simultaneous and sequential
+  // backtracking, transforming blocking neighbours), for comparison with the literal algorithm
+  // of Sections 3.1–3.2. Untangling and the stop rules are unaffected.
+  void UseLiteralPaperAlgorithm() {
+    simultaneous_backtracking_steps = 0;
+    sequential_backtracking_steps = 0;
+    sequential_transform_blockers = false;
+  }
 };
 
 }  // namespace getme

@@ -287,6 +287,15 @@ TEST(CliErrors, UnwritableOutputExitsOneAndNamesThePath) {
   EXPECT_EQ(run.out, "");
 }
 
+TEST(CliErrors, NoUntangleRefusesATangledMeshNamingItsInvalidElements) {
+  const testing::RunResult run =
+      RunGetme({"smooth", SharedMesh("mixed-hex-pyr-tet.vtk"), "/tmp/getme-cli-no-untangle.vtk",
+                "--quiet", "--no-untangle"});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_NE(run.err.find("3 invalid"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("untangling"), std::string::npos) << run.err;
+}
+
 TEST(CliHelp, HelpTextsExitZero) {
   const testing::RunResult main_help = RunGetme({"--help"});
   EXPECT_EQ(main_help.exit_status, 0);
@@ -296,7 +305,7 @@ TEST(CliHelp, HelpTextsExitZero) {
   EXPECT_NE(smooth_help.out.find("Usage: getme smooth IN.vtk OUT.vtk [options]"),
             std::string::npos);
   for (const char* flag : {"--method", "--threads", "--max-iterations", "--free-boundary",
-                           "--binary", "--ascii", "--json"}) {
+                           "--literal", "--no-untangle", "--binary", "--ascii", "--json"}) {
     EXPECT_NE(smooth_help.out.find(flag), std::string::npos) << flag;
   }
   const testing::RunResult quality_help = RunGetme({"quality", "-h"});
