@@ -29,8 +29,10 @@ TEST(MeshgenCommandTest, ParsesKindPathSizeAndSeed) {
 TEST(MeshgenCommandTest, SingleSizeAppliesToAllAxesAndVesselOptionsArePassedOn) {
   absl::StatusOr<MeshgenCommand> command =
       Parse({"--size", "5", "vessel", "v.vtk", "--mesh-size", "0.3", "--layers", "4",
-             "--layer-height-ratio", "0.02", "--bend-angle", "0.5", "--seed", "9", "--binary"});
+             "--layer-height-ratio", "0.02", "--bend-angle", "0.5", "--seed", "9", "--binary",
+             "--fix-wall"});
   ASSERT_TRUE(command.ok()) << command.status();
+  EXPECT_TRUE(command->vessel.fix_outer_wall);
   EXPECT_EQ(command->kind, MeshKind::kVessel);
   EXPECT_EQ(command->nx, 5);
   EXPECT_EQ(command->nz, 5);

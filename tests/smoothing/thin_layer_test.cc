@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "getme/meshgen/thin_prism_vessel.h"
 #include "getme/smoother.h"
 #include "smoothing_test_support.h"
@@ -14,14 +16,26 @@ namespace {
 // The outer surface of the prism layers (the vessel wall) is fixed; the inflow and outflow caps
 // (planes z = 0 and z = length) are not. Pinned caps would pin the cap prisms at their initial 1%
 // height, whose mean ratio is ~0.07 whatever the method (docs/thin-layers.md).
-Mesh VesselWithFixedWall(const meshgen::ThinPrismVesselOptions& options) {
+Mesh VesselWithFixedWall(meshgen::ThinPrismVesselOptions options) {
+  options.fix_outer_wall = true;
   auto mesh = meshgen::ThinPrismVessel(options);
   EXPECT_TRUE(mesh.ok()) << mesh.status();
+  // Independently: every boundary node off the two cap planes is fixed, every fixed node is on
+  // the boundary, and the caps' interior (inside the wall radius) is free.
   const double tolerance = 1e-9 * options.length;
   for (NodeId node = 0; node < mesh->node_count(); ++node) {
     const double z = mesh->z()[node];
     const bool on_cap = z < tolerance || z > options.length - tolerance;
-    if (mesh->is_boundary(node) && !on_cap) mesh->set_fixed(node, true);
+    const double r = std::hypot(mesh->x()[node], mesh->y()[node]);
+    if (mesh->is_boundary(node) && !on_cap) {
+      EXPECT_TRUE(mesh->is_fixed(node)) << node;
+    }
+    if (mesh->is_fixed(node)) {
+      EXPECT_TRUE(mesh->is_boundary(node)) << node;
+    }
+    if (on_cap && r < options.radius * (1.0 + 1e-9)) {
+      EXPECT_FALSE(mesh->is_fixed(node)) << node;
+    }
   }
   return std::move(*mesh);
 }

@@ -72,6 +72,10 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
       command.binary = true;
       continue;
     }
+    if (arg == "--fix-wall") {
+      command.vessel.fix_outer_wall = true;
+      continue;
+    }
     if (i + 1 == args.size()) {
       return absl::InvalidArgumentError(absl::StrCat(arg, " needs a value"));
     }

@@ -36,6 +36,9 @@ inline constexpr char kMeshgenUsage[] =
     "  --radius R  --length L  --bend-angle A  --layers N  --layer-height-ratio F\n"
     "                          vessel geometry and prism layers (defaults 1, 6, 0, 6, 0.01);\n"
     "                          --length 42 --bend-angle 1.5 gives ~100k elements, 60 % prisms\n"
+    "  --fix-wall              vessel: mark the outer wall (outer prism surface) fixed in the\n"
+    "                          `fixed` point data; smooth with --free-boundary so the inflow\n"
+    "                          and outflow caps may move (docs/thin-layers.md)\n"
     "  --binary                write BINARY VTK instead of ASCII\n";
 
 // Parses the arguments after the program name. InvalidArgument names the offending argument.

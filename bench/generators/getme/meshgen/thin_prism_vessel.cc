@@ -48,12 +48,26 @@ absl::StatusOr<Mesh> ThinPrismVessel(const ThinPrismVesselOptions& options) {
   if (!vessel.ok()) return vessel.status();
   const double layer_height =
       options.layer_height_ratio * MeanEdgeLength(draft, vessel->wall_triangles);
+  const std::int64_t tet_nodes = draft.node_count();
   if (absl::Status status =
           ExtrudePrismLayers(draft, vessel->wall_triangles, options.layers, layer_height);
       !status.ok()) {
     return status;
   }
-  return draft.Build();
+  absl::StatusOr<Mesh> mesh = draft.Build();
+  if (!mesh.ok() || !options.fix_outer_wall) return mesh;
+  if (options.layers == 0) {
+    for (const auto& triangle : vessel->wall_triangles) {
+      for (NodeId node : triangle) mesh->set_fixed(node, true);
+    }
+  } else {
+    // Layer nodes come layer by layer after the tetrahedra's: the last layer is the outer wall.
+    const std::int64_t per_layer = (mesh->node_count() - tet_nodes) / options.layers;
+    for (std::int64_t node = mesh->node_count() - per_layer; node < mesh->node_count(); ++node) {
+      mesh->set_fixed(static_cast<NodeId>(node), true);
+    }
+  }
+  return mesh;
 }
 
 }  // namespace getme::meshgen

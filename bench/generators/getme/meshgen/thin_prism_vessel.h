@@ -25,6 +25,10 @@ struct ThinPrismVesselOptions {
   // Every layer is this fraction of the mean wall triangle edge length thick.
   double layer_height_ratio = 0.01;
   std::uint64_t seed = 1;  // gmsh's Mesh.RandomSeed
+  // Mark the outer wall (the outermost layer's nodes, or the tetrahedra's wall without layers)
+  // fixed. With pinned end caps the cap prisms keep their 1% height whatever the smoother does,
+  // so the thin-layer tests fix only the wall and smooth with fix_boundary off.
+  bool fix_outer_wall = false;
 };
 
 // Meshes the vessel with tetrahedra through gmsh's C++ API (3D Delaunay, one thread, fixed random
@@ -34,7 +38,8 @@ struct ThinPrismVesselOptions {
 // layer; tetrahedra come first, then prisms layer by layer (innermost first), in wall triangle
 // order. Each prism's bottom (0,1,2) lies on the inner side, counter-clockwise seen from outside,
 // its top (3,4,5) directly outward (3 above 0). No node is marked fixed: the engine's boundary
-// detection fixes the outer prism surface and the end caps, the tet/prism interface stays free.
+// detection fixes the outer prism surface and the end caps, the tet/prism interface stays free
+// (unless fix_outer_wall).
 // gmsh is global state: calls are serialised by a mutex, and gmsh must not be in use elsewhere.
 absl::StatusOr<Mesh> ThinPrismVessel(const ThinPrismVesselOptions& options = {});
 
