@@ -66,11 +66,7 @@ absl::StatusOr<PhaseSummary> RunLaplace(SmoothingContext& context) {
                     context.ElapsedSeconds(), false});
     if (std::abs(current.q_mean - previous_q_mean) < context.params.laplace_tolerance) break;
   }
-  summary.q_min = current.q_min;
-  summary.q_mean = current.q_mean;
-  summary.seconds = context.ElapsedSeconds() - phase_start;
-  context.Report({Phase::kLaplace, summary.iterations, current.q_min, current.q_mean,
-                  current.invalid, 0, context.ElapsedSeconds(), true});
+  context.FinishPhase(summary, current, phase_start);
   if (cancelled) return absl::CancelledError("smoothing cancelled during Laplacian smoothing");
   return summary;
 }
@@ -134,11 +130,7 @@ absl::StatusOr<PhaseSummary> RunSmartLaplace(SmoothingContext& context) {
                     rejected, context.ElapsedSeconds(), false});
     if (std::abs(current.q_mean - previous_q_mean) < context.params.laplace_tolerance) break;
   }
-  summary.q_min = current.q_min;
-  summary.q_mean = current.q_mean;
-  summary.seconds = context.ElapsedSeconds() - phase_start;
-  context.Report({Phase::kSmartLaplace, summary.iterations, current.q_min, current.q_mean,
-                  current.invalid, 0, context.ElapsedSeconds(), true});
+  context.FinishPhase(summary, current, phase_start);
   if (cancelled)
     return absl::CancelledError("smoothing cancelled during smart Laplacian smoothing");
   return summary;

@@ -66,28 +66,27 @@ QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& p
   const auto count = static_cast<std::int64_t>(quality.size());
   if (count == 0) return {};
   const std::int64_t chunks = (count + kReductionChunk - 1) / kReductionChunk;
-  std::vector<double> chunk_min(chunks), chunk_sum(chunks);
+  std::vector<QualitySummary> partial(chunks);  // q_mean holds the chunk's sum
   pool.ParallelFor(chunks, 1, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t c = first; c < last; ++c) {
-      const std::int64_t begin = c * kReductionChunk;
-      const std::int64_t end = std::min(count, begin + kReductionChunk);
-      double minimum = quality[begin];
-      double sum = 0.0;
-      for (std::int64_t i = begin; i < end; ++i) {
-        minimum = std::min(minimum, quality[i]);
-        sum += quality[i];
+      const std::int64_t end = std::min(count, (c + 1) * kReductionChunk);
+      QualitySummary chunk{1.0, 0.0, 0};
+      for (std::int64_t i = c * kReductionChunk; i < end; ++i) {
+        const double q = std::max(0.0, quality[i]);
+        chunk.q_min = std::min(chunk.q_min, q);
+        chunk.q_mean += q;
+        if (quality[i] < 0.0) ++chunk.invalid;
       }
-      chunk_min[c] = minimum;
-      chunk_sum[c] = sum;
+      partial[c] = chunk;
     }
   });
-  QualitySummary summary{chunk_min[0], 0.0};
-  double sum = 0.0;
-  for (std::int64_t c = 0; c < chunks; ++c) {
-    summary.q_min = std::min(summary.q_min, chunk_min[c]);
-    sum += chunk_sum[c];
+  QualitySummary summary{1.0, 0.0, 0};
+  for (const QualitySummary& chunk : partial) {
+    summary.q_min = std::min(summary.q_min, chunk.q_min);
+    summary.q_mean += chunk.q_mean;
+    summary.invalid += chunk.invalid;
   }
-  summary.q_mean = sum / static_cast<double>(count);
+  summary.q_mean /= static_cast<double>(count);
   return summary;
 }
 

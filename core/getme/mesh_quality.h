@@ -48,11 +48,13 @@ std::vector<std::uint8_t> ComputeElementValidity(const Mesh& mesh, ThreadPool& p
 MeshQuality EvaluateMeshQuality(const Mesh& mesh, ThreadPool& pool,
                                 const QualityOptions& options = {});
 
-// q_min / q_mean of given per-element qualities; the sum runs over fixed-size chunks in a fixed
-// order so the result does not depend on the thread count.
+// q_min / q_mean of given per-element qualities, where a negative entry (kInvalidQuality) is an
+// invalid element counted as q = 0; the sum runs over fixed-size chunks in a fixed order so the
+// result does not depend on the thread count.
 struct QualitySummary {
   double q_min = 0.0;
   double q_mean = 0.0;
+  std::int64_t invalid = 0;  // negative entries
 };
 QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& pool);
 

@@ -241,11 +241,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   summary.iterations = pick;
   RestoreBest();
   const SmoothingContext::Summary state = context_.Summarize();
-  summary.q_min = state.q_min;
-  summary.q_mean = state.q_mean;
-  summary.seconds = context_.ElapsedSeconds() - phase_start;
-  context_.Report(
-      {phase_, pick, state.q_min, state.q_mean, state.invalid, 0, context_.ElapsedSeconds(), true});
+  context_.FinishPhase(summary, state, phase_start);
   if (cancelled) return absl::CancelledError("smoothing cancelled during the sequential substep");
   return summary;
 }

@@ -217,11 +217,7 @@ absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
     context.RefreshQuality();
     current = context.Summarize();
   }
-  summary.q_min = current.q_min;
-  summary.q_mean = current.q_mean;
-  summary.seconds = context.ElapsedSeconds() - phase_start;
-  context.Report({Phase::kSimultaneous, summary.iterations, current.q_min, current.q_mean,
-                  current.invalid, 0, context.ElapsedSeconds(), true});
+  context.FinishPhase(summary, current, phase_start);
   if (cancelled) return absl::CancelledError("smoothing cancelled during the simultaneous substep");
   return summary;
 }

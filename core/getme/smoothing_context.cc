@@ -6,12 +6,6 @@
 #include "getme/vec3.h"
 
 namespace getme {
-namespace {
-
-constexpr std::int64_t kReductionChunk = 8192;
-
-}  // namespace
-
 SmoothingContext::SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in,
                                    ThreadPool& pool_in, const ProgressCallback& progress_in,
                                    const CancellationToken* cancel_in)
@@ -47,36 +41,13 @@ void SmoothingContext::RefreshQuality() {
       });
 }
 
-SmoothingContext::Summary SmoothingContext::Summarize() const {
-  const auto count = static_cast<std::int64_t>(quality.size());
-  const std::int64_t chunks = (count + kReductionChunk - 1) / kReductionChunk;
-  std::vector<Summary> partial(chunks);
-  std::vector<double> sums(chunks);
-  pool.ParallelFor(chunks, 1, [&](std::int64_t first, std::int64_t last) {
-    for (std::int64_t c = first; c < last; ++c) {
-      const std::int64_t begin = c * kReductionChunk;
-      const std::int64_t end = std::min(count, begin + kReductionChunk);
-      Summary s{1.0, 0.0, 0};
-      double sum = 0.0;
-      for (std::int64_t i = begin; i < end; ++i) {
-        const double q = std::max(0.0, quality[i]);
-        s.q_min = std::min(s.q_min, q);
-        sum += q;
-        if (quality[i] < 0.0) ++s.invalid;
-      }
-      partial[c] = s;
-      sums[c] = sum;
-    }
-  });
-  Summary total{1.0, 0.0, 0};
-  double sum = 0.0;
-  for (std::int64_t c = 0; c < chunks; ++c) {
-    total.q_min = std::min(total.q_min, partial[c].q_min);
-    total.invalid += partial[c].invalid;
-    sum += sums[c];
-  }
-  total.q_mean = count > 0 ? sum / static_cast<double>(count) : 0.0;
-  return total;
+void SmoothingContext::FinishPhase(PhaseSummary& summary, const Summary& state,
+                                   double phase_start) const {
+  summary.q_min = state.q_min;
+  summary.q_mean = state.q_mean;
+  summary.seconds = ElapsedSeconds() - phase_start;
+  Report({summary.phase, summary.iterations, state.q_min, state.q_mean, state.invalid, 0,
+          ElapsedSeconds(), true});
 }
 
 double ElementQualityOrInvalid(const Mesh& mesh, ElementId element) {

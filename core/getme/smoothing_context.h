@@ -6,6 +6,7 @@
 
 #include "getme/element_quality.h"
 #include "getme/mesh.h"
+#include "getme/mesh_quality.h"
 #include "getme/progress.h"
 #include "getme/smoother.h"
 #include "getme/smoothing_params.h"
@@ -39,12 +40,11 @@ struct SmoothingContext {
   // Recomputes `quality` for the whole mesh.
   void RefreshQuality();
   // q_min and q_mean of `quality` with invalid elements as 0, and the invalid count.
-  struct Summary {
-    double q_min = 0.0;
-    double q_mean = 0.0;
-    std::int64_t invalid = 0;
-  };
-  Summary Summarize() const;
+  using Summary = QualitySummary;
+  Summary Summarize() const { return SummarizeQualities(quality, pool); }
+  // Completes a phase: records the state it hands on and its duration in `summary`, and reports
+  // the phase's final event.
+  void FinishPhase(PhaseSummary& summary, const Summary& state, double phase_start) const;
 };
 
 // Mean ratio or kInvalidQuality of one element, dispatched on its type.

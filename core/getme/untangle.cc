@@ -222,11 +222,7 @@ absl::StatusOr<PhaseSummary> Untangler::Run() {
     if (repaired == 0) break;
   }
   const SmoothingContext::Summary state = context_.Summarize();
-  summary.q_min = state.q_min;
-  summary.q_mean = state.q_mean;
-  summary.seconds = context_.ElapsedSeconds() - phase_start;
-  context_.Report({Phase::kUntangle, summary.iterations, state.q_min, state.q_mean, state.invalid,
-                   0, context_.ElapsedSeconds(), true});
+  context_.FinishPhase(summary, state, phase_start);
   if (!invalid.empty()) {
     std::vector<ElementId> pinned;
     for (ElementId element : invalid) {
