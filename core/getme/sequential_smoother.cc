@@ -188,7 +188,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const std::int64_t elements = mesh_.element_count();
   const std::int64_t window = params_.sequential_stall_iterations > 0
                                   ? params_.sequential_stall_iterations
-                                  : std::max<std::int64_t>(10000, elements);
+                                  : std::max<std::int64_t>(1000, elements);
   const std::int64_t cap =
       params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 50 * elements;
 

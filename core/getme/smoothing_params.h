@@ -52,7 +52,7 @@ struct SmoothingParams {
   double penalty_success = 0.01;   // Δπ_s: subtracted after a successful transformation
   // The paper leaves the stop rule open (NOTES.md §5). Here: stop when the best q_min of the
   // phase rose by less than sequential_improvement_tolerance over the last
-  // sequential_stall_iterations picks (0: max(10000, elements)), or at sequential_max_iterations
+  // sequential_stall_iterations picks (0: max(1000, elements)), or at sequential_max_iterations
   // picks (0: 50 × elements). The best-q_min state seen is handed on: q_min oscillates as
   // neighbours take turns being the worst element. Measured trade-offs in docs/quality.md.
   std::int64_t sequential_stall_iterations = 0;
