@@ -15,6 +15,7 @@ const char kMainUsage[] =
 Usage:
   getme smooth IN.vtk OUT.vtk [options]   smooth a VTK legacy unstructured grid
   getme quality IN.vtk [options]          report the element quality of a mesh
+  getme jobs list|watch|cancel|fetch      manage jobs on a getme-server
   getme --help                            this text
   getme --version                         the version
 
@@ -42,10 +43,15 @@ Options:
   --binary, --ascii    output encoding (default: the input's)
   --json               one JSON object per line on stdout: progress events, then the result
   --quiet              no progress or log lines on stderr (errors are still reported)
+  --server HOST:PORT   smooth on a getme-server instead of in-process (same output; Ctrl-C
+                       cancels the job on the server)
+  --detach             with --server: queue the job, print its id and return; OUT.vtk may
+                       be left out ('getme jobs fetch' writes it later)
   -h, --help           this text
 
-Exit status: 0 success; 1 failure (input unreadable or not smoothable, output not written);
-2 usage error; 130 interrupted (the output is not written).
+Exit status: 0 success; 1 failure (input unreadable or not smoothable, output not written,
+server error: "getme: CODE: message"); 2 usage error; 130 interrupted (the output is not
+written).
 )";
 
 const char kQualityUsage[] = R"(Usage: getme quality IN.vtk [options]
@@ -58,9 +64,34 @@ Options:
   --bins N      histogram bins (default 20)
   --threads N   worker threads; 0 = all cores (default)
   --json        one JSON object on stdout
+  --server HOST:PORT  evaluate on a getme-server instead of in-process
   -h, --help    this text
 
-Exit status: 0 success; 1 the file cannot be read or holds no volume elements; 2 usage error.
+Exit status: 0 success; 1 the file cannot be read or holds no volume elements, or the server
+failed ("getme: CODE: message"); 2 usage error.
+)";
+
+const char kJobsUsage[] = R"(Usage: getme jobs ACTION [options]
+
+Manages smoothing jobs on a getme-server (queued with 'getme smooth --server … --detach').
+
+Actions:
+  list                                 every job the server knows, newest first
+  watch ID                             live progress until the job ends (Ctrl-C stops
+                                       watching; the job goes on)
+  cancel ID                            cancel a queued or running job
+  fetch ID OUT.vtk --input IN.vtk      write IN.vtk with the job's smoothed coordinates to
+                                       OUT.vtk (the result can be fetched once)
+
+Options:
+  --server HOST:PORT   the server (default 127.0.0.1:50051)
+  --input IN.vtk       fetch: the file the job was submitted from
+  --binary, --ascii    fetch: output encoding (default: the input's)
+  --json               JSON objects on stdout (one per job, event or result)
+  -h, --help           this text
+
+Exit status: 0 success (watch: the job succeeded); 1 failure or the watched job failed or was
+cancelled ("getme: CODE: message"); 2 usage error; 130 interrupted.
 )";
 
 namespace {
@@ -138,6 +169,22 @@ std::function<absl::Status(const std::string&)> SetTrue(bool& target) {
 
 constexpr int kMaxThreads = 1024;
 
+// HOST:PORT, [IPv6]:PORT, or any other gRPC target with a scheme (unix:/path, dns:///host:port).
+std::function<absl::Status(const std::string&)> ServerFlag(std::string& target) {
+  return [&target](const std::string& value) {
+    const bool has_scheme =
+        value.find(":/") != std::string::npos || absl::StartsWith(value, "unix:");
+    const std::size_t colon = value.rfind(':');
+    if (value.empty() ||
+        (!has_scheme && (colon == std::string::npos || colon == 0 || colon + 1 == value.size()))) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "option --server expects HOST:PORT (e.g. 127.0.0.1:50051), got '", value, "'"));
+    }
+    target = value;
+    return absl::OkStatus();
+  };
+}
+
 }  // namespace
 
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args) {
@@ -165,6 +212,8 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--ascii", {false, SetTrue(ascii)}},
       {"--json", {false, SetTrue(options.json)}},
       {"--quiet", {false, SetTrue(options.quiet)}},
+      {"--server", {true, ServerFlag(options.server)}},
+      {"--detach", {false, SetTrue(options.detach)}},
   };
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("smooth", args, flags, positionals, options.help);
@@ -176,6 +225,13 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
   if (binary) options.encoding = formats::VtkEncoding::kBinary;
   if (ascii) options.encoding = formats::VtkEncoding::kAscii;
   if (max_iterations > 0) options.max_iterations = max_iterations;
+  if (options.detach && options.server.empty()) {
+    return absl::InvalidArgumentError("--detach needs --server HOST:PORT (a job to detach from)");
+  }
+  if (options.detach && positionals.size() == 1) {
+    options.input = positionals[0];
+    return options;
+  }
   if (positionals.size() != 2) {
     return absl::InvalidArgumentError(
         absl::StrCat("'getme smooth' needs an input and an output file (IN.vtk OUT.vtk), got ",
@@ -193,6 +249,7 @@ absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<st
       {"--bins", {true, IntegerFlag<int>("--bins", options.bins, 1, 10000)}},
       {"--threads", {true, IntegerFlag<int>("--threads", options.threads, 0, kMaxThreads)}},
       {"--json", {false, SetTrue(options.json)}},
+      {"--server", {true, ServerFlag(options.server)}},
   };
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("quality", args, flags, positionals, options.help);
@@ -206,6 +263,74 @@ absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<st
                      " file arguments; see 'getme quality --help'"));
   }
   options.input = positionals[0];
+  return options;
+}
+
+absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::string>& args) {
+  JobsCommandOptions options;
+  bool binary = false;
+  bool ascii = false;
+  const std::map<std::string, FlagSpec> flags = {
+      {"--server", {true, ServerFlag(options.server)}},
+      {"--input",
+       {true,
+        [&](const std::string& value) {
+          options.input = value;
+          return absl::OkStatus();
+        }}},
+      {"--binary", {false, SetTrue(binary)}},
+      {"--ascii", {false, SetTrue(ascii)}},
+      {"--json", {false, SetTrue(options.json)}},
+  };
+  std::vector<std::string> positionals;
+  if (absl::Status status = ParseArguments("jobs", args, flags, positionals, options.help);
+      !status.ok()) {
+    return status;
+  }
+  if (options.help) return options;
+  if (binary && ascii) return absl::InvalidArgumentError("--binary and --ascii exclude each other");
+  if (binary) options.encoding = formats::VtkEncoding::kBinary;
+  if (ascii) options.encoding = formats::VtkEncoding::kAscii;
+  if (positionals.empty()) {
+    return absl::InvalidArgumentError(
+        "'getme jobs' needs an action: list, watch ID, cancel ID or fetch ID OUT.vtk --input "
+        "IN.vtk; see 'getme jobs --help'");
+  }
+  const std::string action = positionals.front();
+  // Positionals each action takes after its name, and what they are.
+  std::size_t expected = 0;
+  const char* shape = "";
+  if (action == "list") {
+    options.action = JobsAction::kList;
+    shape = "'getme jobs list'";
+  } else if (action == "watch") {
+    options.action = JobsAction::kWatch;
+    expected = 1;
+    shape = "'getme jobs watch ID'";
+  } else if (action == "cancel") {
+    options.action = JobsAction::kCancel;
+    expected = 1;
+    shape = "'getme jobs cancel ID'";
+  } else if (action == "fetch") {
+    options.action = JobsAction::kFetch;
+    expected = 2;
+    shape = "'getme jobs fetch ID OUT.vtk --input IN.vtk'";
+  } else {
+    return absl::InvalidArgumentError(
+        absl::StrCat("unknown jobs action '", action, "'; expected list, watch, cancel or fetch"));
+  }
+  if (positionals.size() != expected + 1) {
+    return absl::InvalidArgumentError(absl::StrCat(shape, " takes ", expected, " argument",
+                                                   expected == 1 ? "" : "s", " after '", action,
+                                                   "', got ", positionals.size() - 1));
+  }
+  if (expected >= 1) options.job_id = positionals[1];
+  if (expected >= 2) options.output = positionals[2];
+  if (options.action == JobsAction::kFetch && options.input.empty()) {
+    return absl::InvalidArgumentError(
+        "'getme jobs fetch' needs --input IN.vtk: the file the job was submitted from (the "
+        "server returns coordinates only)");
+  }
   return options;
 }
 

@@ -17,4 +17,15 @@ int ReportFailure(const absl::Status& status, bool json, int exit_status) {
   return exit_status;
 }
 
+int ReportRemoteFailure(const absl::Status& status, bool json, int exit_status) {
+  std::fprintf(stderr, "getme: %s: %s\n", absl::StatusCodeToString(status.code()).c_str(),
+               std::string(status.message()).c_str());
+  std::fflush(stderr);
+  if (json) {
+    std::printf("%s\n", ErrorJson(status).c_str());
+    std::fflush(stdout);
+  }
+  return exit_status;
+}
+
 }  // namespace getme::cli

@@ -14,4 +14,8 @@ inline constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as shells report 
 // {"event":"error","code":…,"message":…} line on stdout. Returns `exit_status`.
 int ReportFailure(const absl::Status& status, bool json, int exit_status);
 
+// The same for a failure reported by a getme-server, named with its status code:
+// "getme: UNAVAILABLE: failed to connect to all addresses".
+int ReportRemoteFailure(const absl::Status& status, bool json, int exit_status);
+
 }  // namespace getme::cli

@@ -12,6 +12,10 @@
 #include "cli/failure.h"
 #include "cli/quality_command.h"
 #include "cli/smooth_command.h"
+#ifdef GETME_WITH_SERVICE
+#include "cli/jobs_command.h"
+#include "cli/remote_commands.h"
+#endif
 #include "spdlog/sinks/stdout_sinks.h"
 #include "spdlog/spdlog.h"
 
@@ -37,6 +41,16 @@ int PrintUsage(const char* usage) {
   return kExitSuccess;
 }
 
+#ifndef GETME_WITH_SERVICE
+int ServiceNotBuilt(bool json) {
+  return getme::cli::ReportFailure(
+      absl::UnimplementedError("this getme was built without the gRPC service "
+                               "(GETME_BUILD_SERVICE=OFF): --server and 'getme jobs' are "
+                               "unavailable"),
+      json, getme::cli::kExitUsage);
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,6 +66,7 @@ int main(int argc, char** argv) {
   if (command == "-h" || command == "--help" || command == "help") {
     if (!args.empty() && args.front() == "smooth") return PrintUsage(getme::cli::kSmoothUsage);
     if (!args.empty() && args.front() == "quality") return PrintUsage(getme::cli::kQualityUsage);
+    if (!args.empty() && args.front() == "jobs") return PrintUsage(getme::cli::kJobsUsage);
     return PrintUsage(getme::cli::kMainUsage);
   }
   if (command == "--version") {
@@ -64,6 +79,13 @@ int main(int argc, char** argv) {
     if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
     if (options->help) return PrintUsage(getme::cli::kSmoothUsage);
     ConfigureLogging(options->quiet);
+    if (!options->server.empty()) {
+#ifdef GETME_WITH_SERVICE
+      return getme::cli::RunRemoteSmoothCommand(*options);
+#else
+      return ServiceNotBuilt(json);
+#endif
+    }
     return getme::cli::RunSmoothCommand(*options);
   }
   if (command == "quality") {
@@ -72,11 +94,29 @@ int main(int argc, char** argv) {
     if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
     if (options->help) return PrintUsage(getme::cli::kQualityUsage);
     ConfigureLogging(/*quiet=*/true);
+    if (!options->server.empty()) {
+#ifdef GETME_WITH_SERVICE
+      return getme::cli::RunRemoteQualityCommand(*options);
+#else
+      return ServiceNotBuilt(json);
+#endif
+    }
     return getme::cli::RunQualityCommand(*options);
+  }
+  if (command == "jobs") {
+    absl::StatusOr<getme::cli::JobsCommandOptions> options = getme::cli::ParseJobsArguments(args);
+    if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
+    if (options->help) return PrintUsage(getme::cli::kJobsUsage);
+    ConfigureLogging(/*quiet=*/true);
+#ifdef GETME_WITH_SERVICE
+    return getme::cli::RunJobsCommand(*options);
+#else
+    return ServiceNotBuilt(json);
+#endif
   }
   return getme::cli::ReportFailure(
       absl::InvalidArgumentError(absl::StrCat("unknown command '", command,
-                                              "'; expected 'smooth' or 'quality' (see 'getme "
-                                              "--help')")),
+                                              "'; expected 'smooth', 'quality' or 'jobs' (see "
+                                              "'getme --help')")),
       json, kExitUsage);
 }

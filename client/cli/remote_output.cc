@@ -1,0 +1,111 @@
+#include "cli/remote_output.h"
+
+#include "absl/strings/str_format.h"
+#include "cli/json_output.h"
+#include "formats/vtk_mesh.h"
+#include "formats/vtk_writer.h"
+#include "remote/wire_conversion.h"
+#include "spdlog/spdlog.h"
+
+namespace getme::cli {
+
+absl::Status WriteSmoothedFile(std::span<const double> coordinates, const std::string& output,
+                               std::optional<formats::VtkEncoding> encoding,
+                               formats::VtkFile& file) {
+  if (absl::Status status = remote::ApplyCoordinates(coordinates, file); !status.ok()) {
+    return status;
+  }
+  absl::StatusOr<formats::VtkMesh> smoothed = formats::ToMesh(file);
+  if (!smoothed.ok()) return smoothed.status();
+  if (absl::Status status = formats::UpdateFromMesh(smoothed->mesh, smoothed->cell_elements, file);
+      !status.ok()) {
+    return status;
+  }
+  const formats::VtkEncoding chosen = encoding.value_or(file.encoding);
+  if (absl::Status status = formats::WriteVtkFile(output, file, chosen); !status.ok()) {
+    return status;
+  }
+  spdlog::info("wrote {} ({})", output,
+               chosen == formats::VtkEncoding::kBinary ? "binary" : "ascii");
+  return absl::OkStatus();
+}
+
+SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
+                                    Method method, const formats::VtkFile& file,
+                                    const remote::VtkWireMesh& sent,
+                                    const v1::SmoothResult& result) {
+  SmoothReport report;
+  report.input = input;
+  report.output = output;
+  report.method = method;
+  report.nodes = file.point_count();
+  const v1::Mesh& mesh = sent.mesh;
+  report.elements_by_type[TypeIndex(ElementType::kTetrahedron)] = mesh.tetrahedra_size() / 4;
+  report.elements_by_type[TypeIndex(ElementType::kHexahedron)] = mesh.hexahedra_size() / 8;
+  report.elements_by_type[TypeIndex(ElementType::kPrism)] = mesh.wedges_size() / 6;
+  report.elements_by_type[TypeIndex(ElementType::kPyramid)] = mesh.pyramids_size() / 5;
+  report.passthrough_cells =
+      file.cells.size() - static_cast<std::int64_t>(sent.element_cells.size());
+  report.result = remote::FromWireResult(result);
+  return report;
+}
+
+const char* JobStateName(v1::JobState state) {
+  switch (state) {
+    case v1::JOB_STATE_QUEUED:
+      return "QUEUED";
+    case v1::JOB_STATE_RUNNING:
+      return "RUNNING";
+    case v1::JOB_STATE_SUCCEEDED:
+      return "SUCCEEDED";
+    case v1::JOB_STATE_FAILED:
+      return "FAILED";
+    case v1::JOB_STATE_CANCELLED:
+      return "CANCELLED";
+    default:
+      return "UNSPECIFIED";
+  }
+}
+
+std::string JobJson(const v1::Job& job) {
+  const v1::ProgressEvent& latest = job.latest_progress();
+  return JsonObject()
+      .AddString("event", "job")
+      .AddString("job_id", job.job_id())
+      .AddString("state", JobStateName(job.state()))
+      .AddString("method", MethodName(remote::FromWireMethod(job.method())))
+      .AddInt("nodes", static_cast<std::int64_t>(job.nodes()))
+      .AddInt("elements", static_cast<std::int64_t>(job.elements()))
+      .AddString("phase", PhaseName(remote::FromWirePhase(latest.phase())))
+      .AddInt("iteration", latest.iteration())
+      .AddDouble("q_min", latest.q_min())
+      .AddDouble("q_mean", latest.q_mean())
+      .AddBool("result_available", job.result_available())
+      .AddString("error_code",
+                 job.error_code() == 0
+                     ? ""
+                     : absl::StatusCodeToString(static_cast<absl::StatusCode>(job.error_code())))
+      .AddString("error_message", job.error_message())
+      .Build();
+}
+
+std::string FormatJobLine(const v1::Job& job) {
+  const v1::ProgressEvent& latest = job.latest_progress();
+  std::string line = absl::StrFormat(
+      "%-20s %-9s %-13s %9d nodes %9d elements", job.job_id(), JobStateName(job.state()),
+      MethodName(remote::FromWireMethod(job.method())), job.nodes(), job.elements());
+  if (job.has_latest_progress()) {
+    absl::StrAppendFormat(&line, "  %s it %d  q_min %.6f  q_mean %.6f",
+                          PhaseName(remote::FromWirePhase(latest.phase())), latest.iteration(),
+                          latest.q_min(), latest.q_mean());
+  }
+  if (job.result_available()) line += "  result ready";
+  if (!job.error_message().empty()) {
+    absl::StrAppendFormat(&line, "  %s: %s",
+                          absl::StatusCodeToString(static_cast<absl::StatusCode>(job.error_code())),
+                          job.error_message());
+  }
+  return line;
+}
+
+}  // namespace getme::cli

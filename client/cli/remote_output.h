@@ -1,0 +1,36 @@
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+
+#include "absl/status/status.h"
+#include "cli/reports.h"
+#include "formats/vtk_file.h"
+#include "getme/smoothing_params.h"
+#include "getme/v1/smoother.pb.h"
+#include "remote/wire_mesh.h"
+
+namespace getme::cli {
+
+// What the remote modes share with each other and with the local output.
+
+// Puts the smoothed coordinates into `file`, recomputes the per-cell quality arrays exactly as
+// the local mode does (so a remote run writes the same file), and writes it to `output`.
+absl::Status WriteSmoothedFile(std::span<const double> coordinates, const std::string& output,
+                               std::optional<formats::VtkEncoding> encoding,
+                               formats::VtkFile& file);
+
+// The report of a remote smoothing run, filled from the wire result and the sent mesh.
+SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
+                                    Method method, const formats::VtkFile& file,
+                                    const remote::VtkWireMesh& sent,
+                                    const v1::SmoothResult& result);
+
+// "QUEUED", "RUNNING", … as the CLI prints job states.
+const char* JobStateName(v1::JobState state);
+// {"event":"job","job_id":…,"state":"RUNNING",…} and its one-line text form.
+std::string JobJson(const v1::Job& job);
+std::string FormatJobLine(const v1::Job& job);
+
+}  // namespace getme::cli
