@@ -10,10 +10,10 @@ namespace getme::server {
 // Everything getme-server's flags set (server/main.cc documents each flag).
 struct ServerOptions {
   std::string listen = "127.0.0.1:50051";  // host:port; port 0 picks a free one
-  int workers = 2;                          // jobs smoothed at the same time
-  int threads_per_job = 1;                  // engine threads per job (SmoothingParameters.threads)
-  int max_queued_jobs = 16;                 // queued (not yet running) jobs; more: RESOURCE_EXHAUSTED
-  std::int64_t max_elements = 20'000'000;   // larger meshes: INVALID_ARGUMENT
+  int workers = 2;                         // jobs smoothed at the same time
+  int threads_per_job = 1;                 // engine threads per job (SmoothingParameters.threads)
+  int max_queued_jobs = 16;  // queued (not yet running) jobs; more: RESOURCE_EXHAUSTED
+  std::int64_t max_elements = 20'000'000;         // larger meshes: INVALID_ARGUMENT
   absl::Duration result_ttl = absl::Minutes(30);  // unfetched results are dropped after this
   // Progress fan-out: at most one intermediate event per watcher per this interval (the final
   // event of every phase and of the job always goes out).

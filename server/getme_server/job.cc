@@ -1,0 +1,234 @@
+#include "getme_server/job.h"
+
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
+#include "getme/mesh_quality.h"
+#include "getme/smoother.h"
+#include "getme/thread_pool.h"
+#include "getme_server/params_conversion.h"
+#include "getme_server/report_conversion.h"
+#include "spdlog/spdlog.h"
+
+namespace getme::server {
+namespace {
+
+double UnixSeconds(absl::Time t) {
+  return t == absl::InfinitePast() ? 0.0 : absl::ToDoubleSeconds(t - absl::UnixEpoch());
+}
+
+const char* StateName(v1::JobState state) {
+  return v1::JobState_Name(state).c_str() + sizeof("JOB_STATE_") - 1;
+}
+
+}  // namespace
+
+Job::Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
+         v1::ResultOptions options, absl::Duration progress_interval)
+    : id_(std::move(id)),
+      params_(params),
+      nodes_(static_cast<std::uint64_t>(mesh.node_count())),
+      elements_(static_cast<std::uint64_t>(mesh.element_count())),
+      created_(absl::Now()),
+      fanout_(progress_interval),
+      result_(std::make_unique<JobResult>()) {
+  topology.clear_coordinates();  // the smoothed mesh replaces them
+  result_->mesh = std::move(mesh);
+  result_->topology = std::move(topology);
+  result_->options = std::move(options);
+}
+
+void Job::Publish(v1::ProgressEvent event) {
+  std::lock_guard lock(mutex_);
+  event.set_job_id(id_);
+  event.set_sequence(++sequence_);
+  latest_ = event;
+  fanout_.Publish(event);
+}
+
+void Job::Run() {
+  JobResult* work = nullptr;
+  {
+    std::lock_guard lock(mutex_);
+    if (state_ != v1::JOB_STATE_QUEUED) return;
+    state_ = v1::JOB_STATE_RUNNING;
+    started_ = absl::Now();
+    work = result_.get();
+  }
+  spdlog::info("job={} phase=start nodes={} elements={} method={} threads={}", id_, nodes_,
+               elements_, MethodName(params_.method), params_.threads);
+
+  // Only the worker touches `work` until the job is final (cancellation uses the token).
+  const int bins = work->options.histogram_bins() == 0
+                       ? QualityOptions{}.histogram_bins
+                       : static_cast<int>(work->options.histogram_bins());
+  std::optional<MeshQuality> custom_before;
+  std::unique_ptr<ThreadPool> pool;
+  if (bins != QualityOptions{}.histogram_bins) {
+    pool = std::make_unique<ThreadPool>(params_.threads);
+    custom_before = EvaluateMeshQuality(work->mesh, *pool, {.histogram_bins = bins});
+  }
+  absl::StatusOr<SmoothingResult> result = Smooth(
+      work->mesh, params_, [this](const ProgressEvent& event) { Publish(ToWireEvent(event)); },
+      &cancel_);
+
+  v1::ProgressEvent final_event;
+  {
+    std::lock_guard lock(mutex_);
+    if (latest_.has_value()) {
+      final_event = *latest_;
+      final_event.set_phase_done(false);
+    }
+  }
+  if (result.ok()) {
+    v1::SmoothResult& summary = work->summary;
+    summary.set_job_id(id_);
+    const MeshQuality after =
+        pool ? EvaluateMeshQuality(work->mesh, *pool, {.histogram_bins = bins}) : result->after;
+    *summary.mutable_before() =
+        ToWireReport(custom_before ? *custom_before : result->before, work->topology);
+    *summary.mutable_after() = ToWireReport(after, work->topology);
+    for (const PhaseSummary& phase : result->phases) {
+      *summary.add_phases() = ToWirePhaseSummary(phase);
+    }
+    summary.set_iterations_untangle(result->iterations_untangle);
+    summary.set_iterations_simultaneous(result->iterations_simultaneous);
+    summary.set_iterations_sequential(result->iterations_sequential);
+    summary.set_iterations_laplace(result->iterations_laplace);
+    summary.set_seconds(result->seconds);
+    summary.set_threads(result->threads);
+    summary.set_coordinates_only(work->options.coordinates_only());
+    summary.set_nodes(nodes_);
+    final_event.set_q_min(after.q_min);
+    final_event.set_q_mean(after.q_mean);
+    final_event.set_invalid_elements(after.invalid);
+  }
+
+  absl::Status outcome = result.status();
+  double seconds = 0;
+  {
+    std::lock_guard lock(mutex_);
+    if (outcome.code() == absl::StatusCode::kCancelled && !cancel_reason_.empty()) {
+      outcome = absl::CancelledError(absl::StrCat("job ", id_, " cancelled: ", cancel_reason_));
+    }
+    FinishLocked(outcome);
+    seconds = absl::ToDoubleSeconds(finished_ - started_);
+  }
+  final_event.set_elapsed_seconds(seconds);
+  final_event.set_final(true);
+  Publish(std::move(final_event));
+  spdlog::info("job={} phase=done nodes={} elements={} method={} seconds={:.3f} outcome={}{}{}",
+               id_, nodes_, elements_, MethodName(params_.method), seconds, StateName(state()),
+               outcome.ok() ? "" : " error=", outcome.ok() ? "" : std::string(outcome.message()));
+}
+
+void Job::FinishLocked(absl::Status outcome) {
+  finished_ = absl::Now();
+  outcome_ = std::move(outcome);
+  if (outcome_.ok()) {
+    state_ = v1::JOB_STATE_SUCCEEDED;
+  } else {
+    state_ = outcome_.code() == absl::StatusCode::kCancelled ? v1::JOB_STATE_CANCELLED
+                                                             : v1::JOB_STATE_FAILED;
+    result_.reset();
+  }
+}
+
+void Job::Cancel(absl::string_view reason) {
+  bool cancelled_while_queued = false;
+  {
+    std::lock_guard lock(mutex_);
+    if (state_ != v1::JOB_STATE_QUEUED && state_ != v1::JOB_STATE_RUNNING) return;
+    if (cancel_reason_.empty()) cancel_reason_ = std::string(reason);
+    if (state_ == v1::JOB_STATE_QUEUED) {
+      FinishLocked(absl::CancelledError(absl::StrCat("job ", id_, " cancelled: ", reason)));
+      cancelled_while_queued = true;
+    }
+  }
+  cancel_.Cancel();
+  if (cancelled_while_queued) {
+    v1::ProgressEvent final_event;
+    final_event.set_final(true);
+    Publish(std::move(final_event));
+    spdlog::info(
+        "job={} phase=done nodes={} elements={} method={} seconds=0 outcome=CANCELLED "
+        "reason=\"{}\" (while queued)",
+        id_, nodes_, elements_, MethodName(params_.method), std::string(reason));
+  } else {
+    spdlog::info("job={} cancel requested: {}", id_, std::string(reason));
+  }
+}
+
+v1::JobState Job::state() const {
+  std::lock_guard lock(mutex_);
+  return state_;
+}
+
+bool Job::final() const {
+  const v1::JobState s = state();
+  return s != v1::JOB_STATE_QUEUED && s != v1::JOB_STATE_RUNNING;
+}
+
+absl::Status Job::outcome() const {
+  std::lock_guard lock(mutex_);
+  return outcome_;
+}
+
+v1::Job Job::Describe() const {
+  std::lock_guard lock(mutex_);
+  v1::Job job;
+  job.set_job_id(id_);
+  job.set_state(state_);
+  job.set_method(ToWireMethod(params_.method));
+  job.set_nodes(nodes_);
+  job.set_elements(elements_);
+  job.set_created_unix_seconds(UnixSeconds(created_));
+  job.set_started_unix_seconds(UnixSeconds(started_));
+  job.set_finished_unix_seconds(UnixSeconds(finished_));
+  if (latest_.has_value()) *job.mutable_latest_progress() = *latest_;
+  if (!outcome_.ok()) {
+    job.set_error_code(static_cast<int>(outcome_.code()));
+    job.set_error_message(std::string(outcome_.message()));
+  }
+  job.set_result_available(state_ == v1::JOB_STATE_SUCCEEDED && result_ != nullptr);
+  return job;
+}
+
+absl::StatusOr<JobResult> Job::TakeResult() {
+  std::lock_guard lock(mutex_);
+  switch (state_) {
+    case v1::JOB_STATE_QUEUED:
+    case v1::JOB_STATE_RUNNING:
+      return absl::FailedPreconditionError(
+          absl::StrCat("job ", id_, " is ", StateName(state_), ": it has no result yet"));
+    case v1::JOB_STATE_SUCCEEDED:
+      break;
+    default:
+      return outcome_;
+  }
+  if (result_ == nullptr) {
+    return absl::NotFoundError(absl::StrCat(
+        "the result of job ", id_,
+        " is gone: ", result_expired_ ? "its time to live passed" : "it was already fetched"));
+  }
+  JobResult taken = std::move(*result_);
+  result_.reset();
+  result_taken_ = true;
+  return taken;
+}
+
+bool Job::ExpireIfOlderThan(absl::Time now, absl::Duration ttl) {
+  std::lock_guard lock(mutex_);
+  if (state_ == v1::JOB_STATE_QUEUED || state_ == v1::JOB_STATE_RUNNING) return false;
+  if (now - finished_ < ttl) return false;
+  if (result_ != nullptr) {
+    result_.reset();
+    result_expired_ = true;
+    spdlog::info("job={} result expired after {}", id_, absl::FormatDuration(ttl));
+  }
+  // The record outlives its result for a while, so GetResult can say why the result is gone.
+  return now - finished_ >= 2 * ttl;
+}
+
+}  // namespace getme::server

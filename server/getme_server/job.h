@@ -1,0 +1,84 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "absl/status/status.h"
+#include "absl/status/statusor.h"
+#include "absl/time/time.h"
+#include "getme/mesh.h"
+#include "getme/progress.h"
+#include "getme/smoothing_params.h"
+#include "getme/v1/smoother.pb.h"
+#include "getme_server/progress_fanout.h"
+
+namespace getme::server {
+
+// What a finished job hands out once: the summary and the smoothed mesh with the caller's wire
+// topology (for results that carry it).
+struct JobResult {
+  v1::SmoothResult summary;
+  Mesh mesh;
+  v1::Mesh topology;  // the uploaded mesh without its coordinates
+  v1::ResultOptions options;
+};
+
+// One smoothing job: QUEUED → RUNNING → SUCCEEDED | FAILED | CANCELLED (QUEUED → CANCELLED when
+// cancelled before a worker takes it). Thread-safe; shared by the registry, a worker and the
+// handlers watching it.
+class Job {
+ public:
+  Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
+      v1::ResultOptions options, absl::Duration progress_interval);
+
+  const std::string& id() const { return id_; }
+
+  // Runs the engine on the calling (worker) thread; returns at once unless the job is QUEUED.
+  void Run();
+  // Queued: CANCELLED at once. Running: the engine stops within one iteration. Final: no-op.
+  void Cancel(absl::string_view reason);
+
+  v1::JobState state() const;
+  bool final() const;
+  v1::Job Describe() const;
+  // A watcher of the progress events, starting with the latest one.
+  std::shared_ptr<ProgressFanout::Watcher> Watch() { return fanout_.Watch(); }
+  // The job's outcome: OK for SUCCEEDED, else the status it failed or was cancelled with.
+  absl::Status outcome() const;
+
+  // Hands the result out once. FAILED/CANCELLED jobs give their outcome, unfinished ones
+  // FAILED_PRECONDITION, fetched or expired results NOT_FOUND.
+  absl::StatusOr<JobResult> TakeResult();
+  // Drops an unfetched result `ttl` after the job finished; true once the job is final for
+  // twice that (the registry then forgets it).
+  bool ExpireIfOlderThan(absl::Time now, absl::Duration ttl);
+
+ private:
+  void Publish(v1::ProgressEvent event);  // stamps job id and sequence
+  void FinishLocked(absl::Status outcome);
+
+  const std::string id_;
+  const SmoothingParams params_;
+  const std::uint64_t nodes_;
+  const std::uint64_t elements_;
+  const absl::Time created_;
+  CancellationToken cancel_;
+  ProgressFanout fanout_;
+
+  mutable std::mutex mutex_;
+  v1::JobState state_ = v1::JOB_STATE_QUEUED;
+  absl::Time started_ = absl::InfinitePast();
+  absl::Time finished_ = absl::InfinitePast();
+  absl::Status outcome_;
+  std::string cancel_reason_;
+  std::optional<v1::ProgressEvent> latest_;
+  std::uint64_t sequence_ = 0;
+  bool result_taken_ = false;
+  bool result_expired_ = false;
+  std::unique_ptr<JobResult> result_;  // input mesh while queued/running, result once SUCCEEDED
+};
+
+}  // namespace getme::server

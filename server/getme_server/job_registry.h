@@ -1,0 +1,68 @@
+#pragma once
+
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "absl/container/flat_hash_map.h"
+#include "absl/random/random.h"
+#include "absl/status/status.h"
+#include "absl/status/statusor.h"
+#include "absl/time/time.h"
+#include "getme_server/job.h"
+
+namespace getme::server {
+
+// All jobs of the server by id, and the bounded queue the workers take them from. A background
+// sweeper drops results nobody fetched within the time to live.
+class JobRegistry {
+ public:
+  JobRegistry(int max_queued_jobs, absl::Duration result_ttl);
+  ~JobRegistry();
+  JobRegistry(const JobRegistry&) = delete;
+  JobRegistry& operator=(const JobRegistry&) = delete;
+
+  std::string NewJobId();
+  // Queues the job: RESOURCE_EXHAUSTED at once when max_queued_jobs are already waiting,
+  // UNAVAILABLE once the server stopped accepting.
+  absl::Status Submit(std::shared_ptr<Job> job);
+  // NOT_FOUND for ids the registry does not know (never issued, or forgotten after the TTL).
+  absl::StatusOr<std::shared_ptr<Job>> Find(const std::string& id) const;
+  std::vector<std::shared_ptr<Job>> List() const;  // newest first
+
+  // Blocks until a queued job is available (returned) or the workers are stopped (nullptr).
+  std::shared_ptr<Job> TakeNextQueued();
+
+  // Shutdown, in this order: refuse new jobs and cancel the queued ones; wait (up to a deadline)
+  // for running ones; cancel what still runs; release the workers.
+  void StopAccepting(absl::string_view reason);
+  bool WaitUntilNoneRunning(absl::Time deadline) const;
+  void CancelAll(absl::string_view reason);
+  void StopWorkers();
+
+ private:
+  void SweepLoop();
+  std::int64_t QueuedCountLocked() const;
+
+  const int max_queued_jobs_;
+  const absl::Duration result_ttl_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable queue_changed_;
+  absl::flat_hash_map<std::string, std::shared_ptr<Job>> jobs_;
+  std::vector<std::shared_ptr<Job>> submission_order_;
+  std::deque<std::shared_ptr<Job>> queue_;
+  bool accepting_ = true;
+  bool workers_stopped_ = false;
+  absl::BitGen random_;
+
+  std::condition_variable sweeper_wake_;
+  bool sweeper_stop_ = false;
+  std::thread sweeper_;
+};
+
+}  // namespace getme::server

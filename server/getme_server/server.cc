@@ -1,0 +1,141 @@
+#include "getme_server/server.h"
+
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
+#include "getme_server/job_registry.h"
+#include "getme_server/smoother_service.h"
+#include "getme_server/worker_pool.h"
+#include "grpcpp/ext/proto_server_reflection_plugin.h"
+#include "grpcpp/health_check_service_interface.h"
+#include "grpcpp/security/server_credentials.h"
+#include "grpcpp/server.h"
+#include "grpcpp/server_builder.h"
+#include "spdlog/spdlog.h"
+
+namespace getme::server {
+namespace {
+
+// Requests arrive in chunks, so this bounds one message, not a mesh.
+constexpr int kMaxReceiveMessageBytes = 16 << 20;
+// After running jobs ended, handlers still streaming results get this long to finish.
+constexpr absl::Duration kHandlerDrain = absl::Seconds(10);
+
+absl::Status CheckOptions(const ServerOptions& options) {
+  auto at_least = [](const char* flag, std::int64_t value, std::int64_t min) {
+    return value >= min ? absl::OkStatus()
+                        : absl::InvalidArgumentError(absl::StrCat(
+                              "--", flag, " = ", value, " is out of range: must be >= ", min));
+  };
+  if (auto s = at_least("workers", options.workers, 1); !s.ok()) return s;
+  if (auto s = at_least("threads_per_job", options.threads_per_job, 0); !s.ok()) return s;
+  if (auto s = at_least("max_queued_jobs", options.max_queued_jobs, 0); !s.ok()) return s;
+  if (auto s = at_least("max_elements", options.max_elements, 1); !s.ok()) return s;
+  if (options.result_ttl <= absl::ZeroDuration()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "--result_ttl = ", absl::FormatDuration(options.result_ttl), " must be positive"));
+  }
+  return absl::OkStatus();
+}
+
+class SmootherServerImpl final : public SmootherServer {
+ public:
+  explicit SmootherServerImpl(const ServerOptions& options)
+      : registry_(options.max_queued_jobs, options.result_ttl),
+        workers_(registry_, options.workers),
+        service_(registry_, options) {}
+
+  ~SmootherServerImpl() override { Shutdown(absl::ZeroDuration()); }
+
+  absl::Status Listen(const std::string& address) {
+    grpc::EnableDefaultHealthCheckService(true);
+    grpc::reflection::InitProtoReflectionServerBuilderPlugin();
+    grpc::ServerBuilder builder;
+    builder.AddListeningPort(address, grpc::InsecureServerCredentials(), &port_);
+    builder.SetMaxReceiveMessageSize(kMaxReceiveMessageBytes);
+    builder.RegisterService(&service_);
+    server_ = builder.BuildAndStart();
+    if (server_ == nullptr || port_ == 0) {
+      return absl::UnavailableError(absl::StrCat("cannot listen on '", address,
+                                                 "' (address in use or malformed host:port?)"));
+    }
+    server_->GetHealthCheckService()->SetServingStatus(true);
+    return absl::OkStatus();
+  }
+
+  int port() const override { return port_; }
+
+  void Shutdown(absl::Duration grace) override {
+    std::unique_lock lock(mutex_);
+    if (shutdown_started_) {
+      shutdown_done_cv_.wait(lock, [this] { return shutdown_done_; });
+      return;
+    }
+    shutdown_started_ = true;
+    lock.unlock();
+    Drain(grace);
+    lock.lock();
+    shutdown_done_ = true;
+    shutdown_done_cv_.notify_all();
+  }
+
+  void Wait() override {
+    std::unique_lock lock(mutex_);
+    shutdown_done_cv_.wait(lock, [this] { return shutdown_done_; });
+  }
+
+ private:
+  void Drain(absl::Duration grace) {
+    spdlog::info("shutting down: no new calls or jobs; running jobs may finish within {}",
+                 absl::FormatDuration(grace));
+    if (server_ != nullptr) server_->GetHealthCheckService()->SetServingStatus(false);
+    registry_.StopAccepting("the server is shutting down");
+    const absl::Time jobs_deadline = absl::Now() + grace;
+    // gRPC stops accepting calls at once and waits for the handlers (which end with their jobs).
+    std::thread stop_calls([this, jobs_deadline] {
+      if (server_ != nullptr) {
+        server_->Shutdown(absl::ToChronoTime(jobs_deadline + kHandlerDrain));
+      }
+    });
+    if (!registry_.WaitUntilNoneRunning(jobs_deadline)) {
+      spdlog::warn("grace period over: cancelling the jobs still running");
+    }
+    registry_.CancelAll("the server is shutting down");
+    registry_.StopWorkers();
+    workers_.Join();
+    stop_calls.join();
+    if (server_ != nullptr) server_->Wait();
+    spdlog::info("shutdown complete");
+  }
+
+  JobRegistry registry_;
+  WorkerPool workers_;
+  SmootherService service_;
+  std::unique_ptr<grpc::Server> server_;
+  int port_ = 0;
+
+  std::mutex mutex_;
+  std::condition_variable shutdown_done_cv_;
+  bool shutdown_started_ = false;
+  bool shutdown_done_ = false;
+};
+
+}  // namespace
+
+absl::StatusOr<std::unique_ptr<SmootherServer>> SmootherServer::Start(
+    const ServerOptions& options) {
+  if (auto s = CheckOptions(options); !s.ok()) return s;
+  auto server = std::make_unique<SmootherServerImpl>(options);
+  if (auto s = server->Listen(options.listen); !s.ok()) return s;
+  spdlog::info(
+      "getme-server listening on port {} (workers={} threads_per_job={} "
+      "max_queued_jobs={} max_elements={} result_ttl={})",
+      server->port(), options.workers, options.threads_per_job, options.max_queued_jobs,
+      options.max_elements, absl::FormatDuration(options.result_ttl));
+  return server;
+}
+
+}  // namespace getme::server

@@ -1,0 +1,269 @@
+#include "getme_server/smoother_service.h"
+
+#include <chrono>
+#include <string>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
+#include "getme/mesh_quality.h"
+#include "getme/thread_pool.h"
+#include "getme_server/mesh_conversion.h"
+#include "getme_server/params_conversion.h"
+#include "getme_server/report_conversion.h"
+#include "getme_server/status_mapping.h"
+#include "spdlog/spdlog.h"
+
+namespace getme::server {
+namespace {
+
+// How often a handler waiting for progress checks whether its client is still there: a cancelled
+// call or a passed deadline then cancels the job, which stops within one engine iteration.
+constexpr absl::Duration kClientPollInterval = absl::Milliseconds(50);
+constexpr std::uint32_t kMaxHistogramBins = 10'000;
+
+template <typename Header>
+absl::Status CheckHeader(const Header& header, std::int64_t max_elements) {
+  if (header.has_expected_size()) return CheckDeclaredSize(header.expected_size(), max_elements);
+  return absl::OkStatus();
+}
+
+absl::Status CheckHistogramBins(std::uint32_t bins, const char* field) {
+  if (bins <= kMaxHistogramBins) return absl::OkStatus();
+  return absl::InvalidArgumentError(absl::StrCat(
+      field, " = ", bins, " is out of range: must be in [0, ", kMaxHistogramBins, "] (0 = 20)"));
+}
+
+// Reads an upload stream: an optional header first, then mesh chunks. A missing header means
+// default parameters.
+template <typename Request, typename Header, typename Reader>
+absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64_t max_elements,
+                        Header& header, v1::Mesh& mesh) {
+  Request request;
+  std::int64_t message = 0;
+  bool have_header = false;
+  while (reader->Read(&request)) {
+    if (request.has_header()) {
+      if (message > 0) {
+        return absl::InvalidArgumentError(
+            absl::StrCat("request message ", message,
+                         " is a header: the header must be the first message, "
+                         "and come only once"));
+      }
+      header = request.header();
+      have_header = true;
+      if (auto s = CheckHeader(header, max_elements); !s.ok()) return s;
+    } else if (request.has_chunk()) {
+      if (auto s = AppendMeshChunk(request.chunk(), max_elements, mesh); !s.ok()) return s;
+    } else {
+      return absl::InvalidArgumentError(
+          absl::StrCat("request message ", message, " carries neither a header nor a chunk"));
+    }
+    ++message;
+  }
+  if (context->IsCancelled()) return absl::CancelledError("the client cancelled the upload");
+  if (have_header && header.has_expected_size()) {
+    return CheckExpectedSize(header.expected_size(), mesh);
+  }
+  return absl::OkStatus();
+}
+
+enum class WatchEnd { kJobEnded, kClientGone, kDeadline };
+
+bool DeadlinePassed(const grpc::ServerContext* context) {
+  return context->deadline() <= std::chrono::system_clock::now();
+}
+
+// Forwards progress events until the job's final event, or until the client goes away.
+template <typename WriteEvent>
+WatchEnd ForwardProgress(grpc::ServerContext* context, ProgressFanout::Watcher& watcher,
+                         const WriteEvent& write) {
+  v1::ProgressEvent event;
+  while (true) {
+    switch (watcher.Next(kClientPollInterval, event)) {
+      case ProgressFanout::NextResult::kEnded:
+        return WatchEnd::kJobEnded;
+      case ProgressFanout::NextResult::kEvent:
+        if (!write(event))
+          return DeadlinePassed(context) ? WatchEnd::kDeadline : WatchEnd::kClientGone;
+        if (event.final()) return WatchEnd::kJobEnded;
+        break;
+      case ProgressFanout::NextResult::kTimeout:
+        if (DeadlinePassed(context)) return WatchEnd::kDeadline;
+        if (context->IsCancelled()) return WatchEnd::kClientGone;
+        break;
+    }
+  }
+}
+
+template <typename Writer>
+grpc::Status StreamResult(JobResult& result, Writer* writer) {
+  v1::SmoothResponse response;
+  *response.mutable_result() = std::move(result.summary);
+  if (!writer->Write(response)) {
+    return grpc::Status(grpc::StatusCode::CANCELLED, "the client went away before the result");
+  }
+  const bool sent =
+      EmitResultChunks(result.topology, result.mesh, result.options.coordinates_only(),
+                       result.options.nodes_per_chunk(), [writer](const v1::MeshChunk& chunk) {
+                         v1::SmoothResponse message;
+                         *message.mutable_chunk() = chunk;
+                         return writer->Write(message);
+                       });
+  if (!sent) {
+    return grpc::Status(grpc::StatusCode::CANCELLED,
+                        "the client went away while the result was streamed");
+  }
+  return grpc::Status::OK;
+}
+
+}  // namespace
+
+absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::SmoothHeader& header,
+                                                                v1::Mesh mesh) {
+  absl::StatusOr<SmoothingParams> params =
+      ToEngineParams(header.parameters(), options_.threads_per_job);
+  if (!params.ok()) return params.status();
+  if (auto s = CheckHistogramBins(header.result_options().histogram_bins(),
+                                  "result_options.histogram_bins");
+      !s.ok()) {
+    return s;
+  }
+  absl::StatusOr<Mesh> engine_mesh = ToEngineMesh(mesh, options_.max_elements);
+  if (!engine_mesh.ok()) return engine_mesh.status();
+  return std::make_shared<Job>(registry_.NewJobId(), std::move(mesh), *std::move(engine_mesh),
+                               *params, header.result_options(), options_.progress_interval);
+}
+
+grpc::Status SmootherService::Smooth(
+    grpc::ServerContext* context,
+    grpc::ServerReaderWriter<v1::SmoothResponse, v1::SmoothRequest>* stream) {
+  v1::SmoothHeader header;
+  v1::Mesh mesh;
+  if (auto s = ReadUpload<v1::SmoothRequest>(context, stream, options_.max_elements, header, mesh);
+      !s.ok()) {
+    return ToGrpcStatus(s);
+  }
+  absl::StatusOr<std::shared_ptr<Job>> job = CreateJob(header, std::move(mesh));
+  if (!job.ok()) return ToGrpcStatus(job.status());
+  // Watch before queueing, so this caller sees every event from the first one.
+  std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
+  if (auto s = registry_.Submit(*job); !s.ok()) return ToGrpcStatus(s);
+  spdlog::info("job={} queued by Smooth from {}", (*job)->id(), context->peer());
+
+  const WatchEnd end = ForwardProgress(context, *watcher, [stream](const v1::ProgressEvent& e) {
+    v1::SmoothResponse response;
+    *response.mutable_progress() = e;
+    return stream->Write(response);
+  });
+  if (end == WatchEnd::kDeadline) {
+    (*job)->Cancel("the Smooth call's deadline passed");
+    return grpc::Status(grpc::StatusCode::DEADLINE_EXCEEDED,
+                        absl::StrCat("deadline passed; job ", (*job)->id(), " cancelled"));
+  }
+  if (end == WatchEnd::kClientGone) {
+    (*job)->Cancel("the client cancelled the Smooth call");
+    return grpc::Status(grpc::StatusCode::CANCELLED,
+                        absl::StrCat("call cancelled; job ", (*job)->id(), " cancelled"));
+  }
+  absl::StatusOr<JobResult> result = (*job)->TakeResult();
+  if (!result.ok()) return ToGrpcStatus(result.status());
+  return StreamResult(*result, stream);
+}
+
+grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
+                                        grpc::ServerReader<v1::SmoothRequest>* reader,
+                                        v1::Job* job_out) {
+  v1::SmoothHeader header;
+  v1::Mesh mesh;
+  if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements, header, mesh);
+      !s.ok()) {
+    return ToGrpcStatus(s);
+  }
+  absl::StatusOr<std::shared_ptr<Job>> job = CreateJob(header, std::move(mesh));
+  if (!job.ok()) return ToGrpcStatus(job.status());
+  if (auto s = registry_.Submit(*job); !s.ok()) return ToGrpcStatus(s);
+  spdlog::info("job={} queued by SubmitJob from {}", (*job)->id(), context->peer());
+  *job_out = (*job)->Describe();
+  return grpc::Status::OK;
+}
+
+grpc::Status SmootherService::WatchJob(grpc::ServerContext* context,
+                                       const v1::WatchJobRequest* request,
+                                       grpc::ServerWriter<v1::ProgressEvent>* writer) {
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  if (!job.ok()) return ToGrpcStatus(job.status());
+  std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
+  // A watcher leaving does not cancel the job: that is what CancelJob is for.
+  switch (ForwardProgress(context, *watcher,
+                          [writer](const v1::ProgressEvent& e) { return writer->Write(e); })) {
+    case WatchEnd::kJobEnded:
+      return grpc::Status::OK;
+    case WatchEnd::kDeadline:
+      return grpc::Status(grpc::StatusCode::DEADLINE_EXCEEDED, "deadline passed while watching");
+    case WatchEnd::kClientGone:
+      break;
+  }
+  return grpc::Status(grpc::StatusCode::CANCELLED, "the watcher went away");
+}
+
+grpc::Status SmootherService::GetJob(grpc::ServerContext*, const v1::GetJobRequest* request,
+                                     v1::Job* job_out) {
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  if (!job.ok()) return ToGrpcStatus(job.status());
+  *job_out = (*job)->Describe();
+  return grpc::Status::OK;
+}
+
+grpc::Status SmootherService::CancelJob(grpc::ServerContext* context,
+                                        const v1::CancelJobRequest* request, v1::Job* job_out) {
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  if (!job.ok()) return ToGrpcStatus(job.status());
+  (*job)->Cancel(absl::StrCat("CancelJob from ", context->peer()));
+  *job_out = (*job)->Describe();
+  return grpc::Status::OK;
+}
+
+grpc::Status SmootherService::ListJobs(grpc::ServerContext*, const v1::ListJobsRequest*,
+                                       v1::ListJobsResponse* response) {
+  for (const auto& job : registry_.List()) *response->add_jobs() = job->Describe();
+  return grpc::Status::OK;
+}
+
+grpc::Status SmootherService::GetResult(grpc::ServerContext*, const v1::GetResultRequest* request,
+                                        grpc::ServerWriter<v1::SmoothResponse>* writer) {
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  if (!job.ok()) return ToGrpcStatus(job.status());
+  absl::StatusOr<JobResult> result = (*job)->TakeResult();
+  if (!result.ok()) return ToGrpcStatus(result.status());
+  spdlog::info("job={} result fetched", (*job)->id());
+  return StreamResult(*result, writer);
+}
+
+grpc::Status SmootherService::EvaluateQuality(
+    grpc::ServerContext* context, grpc::ServerReader<v1::EvaluateQualityRequest>* reader,
+    v1::QualityReport* report) {
+  v1::EvaluateQualityHeader header;
+  v1::Mesh wire;
+  if (auto s = ReadUpload<v1::EvaluateQualityRequest>(context, reader, options_.max_elements,
+                                                      header, wire);
+      !s.ok()) {
+    return ToGrpcStatus(s);
+  }
+  if (auto s = CheckHistogramBins(header.histogram_bins(), "histogram_bins"); !s.ok()) {
+    return ToGrpcStatus(s);
+  }
+  absl::StatusOr<Mesh> mesh = ToEngineMesh(wire, options_.max_elements);
+  if (!mesh.ok()) return ToGrpcStatus(mesh.status());
+  ThreadPool pool(options_.threads_per_job);
+  QualityOptions quality_options;
+  if (header.histogram_bins() > 0) {
+    quality_options.histogram_bins = static_cast<int>(header.histogram_bins());
+  }
+  *report = ToWireReport(EvaluateMeshQuality(*mesh, pool, quality_options), wire);
+  spdlog::info("quality evaluated: nodes={} elements={} q_min={} q_mean={}", mesh->node_count(),
+               mesh->element_count(), report->q_min(), report->q_mean());
+  return grpc::Status::OK;
+}
+
+}  // namespace getme::server

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "getme/v1/smoother.grpc.pb.h"
+#include "getme_server/job_registry.h"
+#include "getme_server/server_options.h"
+
+namespace getme::server {
+
+// The getme.v1.Smoother handlers (synchronous API). They translate wire messages to engine
+// types and back, and leave queueing, running and progress fan-out to the registry and jobs.
+class SmootherService final : public v1::Smoother::Service {
+ public:
+  SmootherService(JobRegistry& registry, const ServerOptions& options)
+      : registry_(registry), options_(options) {}
+
+  grpc::Status Smooth(
+      grpc::ServerContext* context,
+      grpc::ServerReaderWriter<v1::SmoothResponse, v1::SmoothRequest>* stream) override;
+  grpc::Status SubmitJob(grpc::ServerContext* context,
+                         grpc::ServerReader<v1::SmoothRequest>* reader, v1::Job* job) override;
+  grpc::Status WatchJob(grpc::ServerContext* context, const v1::WatchJobRequest* request,
+                        grpc::ServerWriter<v1::ProgressEvent>* writer) override;
+  grpc::Status GetJob(grpc::ServerContext* context, const v1::GetJobRequest* request,
+                      v1::Job* job) override;
+  grpc::Status CancelJob(grpc::ServerContext* context, const v1::CancelJobRequest* request,
+                         v1::Job* job) override;
+  grpc::Status ListJobs(grpc::ServerContext* context, const v1::ListJobsRequest* request,
+                        v1::ListJobsResponse* response) override;
+  grpc::Status GetResult(grpc::ServerContext* context, const v1::GetResultRequest* request,
+                         grpc::ServerWriter<v1::SmoothResponse>* writer) override;
+  grpc::Status EvaluateQuality(grpc::ServerContext* context,
+                               grpc::ServerReader<v1::EvaluateQualityRequest>* reader,
+                               v1::QualityReport* report) override;
+
+ private:
+  absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v1::Mesh mesh);
+
+  JobRegistry& registry_;
+  const ServerOptions options_;
+};
+
+}  // namespace getme::server

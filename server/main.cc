@@ -1,0 +1,81 @@
+// getme-server: the getme.v1.Smoother gRPC service (plus grpc.health.v1 and server reflection).
+#include <pthread.h>
+#include <signal.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "absl/flags/flag.h"
+#include "absl/flags/parse.h"
+#include "absl/flags/usage.h"
+#include "absl/flags/usage_config.h"
+#include "absl/strings/match.h"
+#include "absl/time/time.h"
+#include "getme_server/server.h"
+#include "getme_server/server_options.h"
+#include "spdlog/sinks/stdout_sinks.h"
+#include "spdlog/spdlog.h"
+
+ABSL_FLAG(std::string, listen, "127.0.0.1:50051",
+          "host:port to listen on (plaintext gRPC); port 0 picks a free port");
+ABSL_FLAG(int, workers, 2, "jobs smoothed at the same time (worker threads)");
+ABSL_FLAG(int, threads_per_job, 1,
+          "engine threads per job when the request leaves SmoothingParameters.threads unset; "
+          "0 = all cores");
+ABSL_FLAG(int, max_queued_jobs, 16,
+          "jobs that may wait for a worker; one more is refused with RESOURCE_EXHAUSTED");
+ABSL_FLAG(int64_t, max_elements, 20'000'000,
+          "largest mesh accepted, in elements; larger ones are refused with INVALID_ARGUMENT");
+ABSL_FLAG(absl::Duration, result_ttl, absl::Minutes(30),
+          "how long a finished job's result is kept for GetResult if nobody fetches it (e.g. 30m)");
+ABSL_FLAG(absl::Duration, progress_interval, absl::Milliseconds(100),
+          "at most one intermediate progress event per watcher per this interval (phase ends and "
+          "the final event always go out)");
+ABSL_FLAG(absl::Duration, shutdown_grace, absl::Seconds(30),
+          "on SIGTERM/SIGINT: how long running jobs may finish before they are cancelled");
+
+int main(int argc, char** argv) {
+  absl::SetProgramUsageMessage(
+      "getme-server [flags]: serves GETMe mesh smoothing over gRPC (service getme.v1.Smoother, "
+      "see proto/getme/v1/smoother.proto), with grpc.health.v1 health checking and server "
+      "reflection. SIGTERM or SIGINT drains it: no new jobs, running jobs may finish within "
+      "--shutdown_grace, queued ones are cancelled, exit code 0.");
+  // --help lists this file's flags (Abseil's default looks for a file named after the binary).
+  absl::FlagsUsageConfig usage_config;
+  usage_config.contains_help_flags = [](absl::string_view file) {
+    return absl::EndsWith(file, "server/main.cc");
+  };
+  usage_config.contains_helpshort_flags = usage_config.contains_help_flags;
+  absl::SetFlagsUsageConfig(usage_config);
+  absl::ParseCommandLine(argc, argv);
+  spdlog::set_default_logger(spdlog::stderr_logger_mt("getme-server"));
+
+  // Block the signals before any thread starts, so every thread inherits the mask and only the
+  // sigwait below receives them: no work in a signal handler.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGTERM);
+  sigaddset(&stop_signals, SIGINT);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  getme::server::ServerOptions options;
+  options.listen = absl::GetFlag(FLAGS_listen);
+  options.workers = absl::GetFlag(FLAGS_workers);
+  options.threads_per_job = absl::GetFlag(FLAGS_threads_per_job);
+  options.max_queued_jobs = absl::GetFlag(FLAGS_max_queued_jobs);
+  options.max_elements = absl::GetFlag(FLAGS_max_elements);
+  options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
+  options.progress_interval = absl::GetFlag(FLAGS_progress_interval);
+  options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+
+  auto server = getme::server::SmootherServer::Start(options);
+  if (!server.ok()) {
+    spdlog::error("getme-server: {}", std::string(server.status().message()));
+    return EXIT_FAILURE;
+  }
+  int signal_number = 0;
+  sigwait(&stop_signals, &signal_number);
+  spdlog::info("received {}", signal_number == SIGTERM ? "SIGTERM" : "SIGINT");
+  (*server)->Shutdown(options.shutdown_grace);
+  return EXIT_SUCCESS;
+}
