@@ -57,6 +57,9 @@ int Watch(remote::SmootherClient& client, const JobsCommandOptions& options) {
     watched = client.WatchJob(
         options.job_id,
         [&](const v1::ProgressEvent& wire_event) {
+          // The job's closing marker repeats the state of the last phase end; it is not an engine
+          // event, and local mode has no such line.
+          if (wire_event.final() && !wire_event.phase_done()) return;
           const ProgressEvent event = remote::FromWireProgress(wire_event);
           if (options.json) {
             std::printf("%s\n", ProgressEventJson(event).c_str());

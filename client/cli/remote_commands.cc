@@ -65,6 +65,9 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
 
   ProgressPrinter printer(stderr, isatty(fileno(stderr)) != 0);
   const remote::ProgressHandler progress = [&](const v1::ProgressEvent& wire_event) {
+    // The job's closing marker repeats the state of the last phase end; it is not an engine
+    // event, and local mode has no such line.
+    if (wire_event.final() && !wire_event.phase_done()) return;
     const ProgressEvent event = remote::FromWireProgress(wire_event);
     if (options.json) {
       std::printf("%s\n", ProgressEventJson(event).c_str());

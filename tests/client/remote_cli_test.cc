@@ -1,0 +1,235 @@
+// The `getme` executable against an in-process server: `smooth --server` writes the same file as
+// the local mode, --json lines keep their order and keys, errors print the server's code and
+// message, and `getme jobs` lists, cancels, watches and fetches detached jobs.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "absl/strings/match.h"
+#include "absl/strings/str_split.h"
+#include "json_test_parser.h"
+#include "remote/smoother_client.h"
+#include "remote/wire_conversion.h"
+#include "remote/wire_mesh.h"
+#include "run_getme.h"
+#include "test_meshes.h"
+#include "test_server.h"
+
+namespace getme::remote {
+namespace {
+
+using cli::testing::JsonValue;
+using cli::testing::Lines;
+using cli::testing::ParseJson;
+using cli::testing::RunGetme;
+using cli::testing::RunResult;
+using cli::testing::TempPath;
+
+const std::string kHybrid = std::string(GETME_TEST_DATA) + "/hybrid-example.vtk";
+const std::string kHexBlock =
+    std::string(GETME_SHARED_MESHES) + "/mesquite/1000hex-block-internal-bias.vtk";
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream stream(path, std::ios::binary);
+  std::ostringstream contents;
+  contents << stream.rdbuf();
+  return contents.str();
+}
+
+std::vector<JsonValue> JsonLines(const std::string& out) {
+  std::vector<JsonValue> values;
+  for (const std::string& line : Lines(out)) {
+    std::optional<JsonValue> value = ParseJson(line);
+    EXPECT_TRUE(value.has_value()) << "not JSON: " << line;
+    if (value) values.push_back(*std::move(value));
+  }
+  return values;
+}
+
+std::vector<std::string> Keys(const JsonValue& object) {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : object.object) keys.push_back(key);
+  return keys;
+}
+
+class RemoteCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    server_ = testing::StartTestServer(/*workers=*/1);
+    ASSERT_NE(server_, nullptr);
+    target_ = testing::TargetOf(*server_);
+  }
+  void TearDown() override {
+    if (server_) server_->Shutdown(absl::Seconds(1));
+  }
+
+  std::unique_ptr<server::SmootherServer> server_;
+  std::string target_;
+};
+
+TEST_F(RemoteCliTest, RemoteSmoothWritesTheSameFileAsLocal) {
+  for (const std::string& input : {kHexBlock, kHybrid}) {
+    const std::string local_out = TempPath("local.vtk");
+    const std::string remote_out = TempPath("remote.vtk");
+    const RunResult local = RunGetme({"smooth", input, local_out, "--quiet", "--threads", "1"});
+    ASSERT_EQ(local.exit_status, 0) << local.err;
+    const RunResult remote = RunGetme({"smooth", input, remote_out, "--server", target_});
+    ASSERT_EQ(remote.exit_status, 0) << remote.err;
+    const std::string local_file = ReadFile(local_out);
+    ASSERT_FALSE(local_file.empty());
+    EXPECT_TRUE(local_file == ReadFile(remote_out))
+        << input << ": the remote result file differs from the local one";
+    // The summary table is printed as in local mode.
+    EXPECT_NE(remote.out.find("q_mean"), std::string::npos) << remote.out;
+  }
+}
+
+TEST_F(RemoteCliTest, JsonEventsInOrderAndTheSameResultKeys) {
+  const RunResult local =
+      RunGetme({"smooth", kHybrid, TempPath("local.vtk"), "--json", "--threads", "1"});
+  ASSERT_EQ(local.exit_status, 0) << local.err;
+  const RunResult remote =
+      RunGetme({"smooth", kHybrid, TempPath("remote.vtk"), "--json", "--server", target_});
+  ASSERT_EQ(remote.exit_status, 0) << remote.err;
+  const std::vector<JsonValue> local_lines = JsonLines(local.out);
+  const std::vector<JsonValue> remote_lines = JsonLines(remote.out);
+  ASSERT_GE(remote_lines.size(), 3u);
+  // The server streams every engine event (unthrottled test server): the same lines but time.
+  ASSERT_EQ(remote_lines.size(), local_lines.size());
+  for (std::size_t i = 0; i + 1 < remote_lines.size(); ++i) {
+    EXPECT_EQ(remote_lines[i].Find("event")->string, "progress") << "line " << i;
+    EXPECT_EQ(Keys(remote_lines[i]), Keys(local_lines[i])) << "line " << i;
+    for (const char* key : {"phase", "iteration", "q_min", "q_mean", "phase_done"}) {
+      const JsonValue* l = local_lines[i].Find(key);
+      const JsonValue* r = remote_lines[i].Find(key);
+      ASSERT_TRUE(l != nullptr && r != nullptr) << key;
+      // The wire numbers elements by type, so q_mean sums in another order: equal to rounding.
+      EXPECT_NEAR(r->number, l->number, 1e-12) << "line " << i << " " << key;
+      EXPECT_EQ(r->string, l->string) << "line " << i << " " << key;
+      EXPECT_EQ(r->boolean, l->boolean) << "line " << i << " " << key;
+    }
+  }
+  const JsonValue& result = remote_lines.back();
+  EXPECT_EQ(result.Find("event")->string, "result");
+  EXPECT_EQ(Keys(result), Keys(local_lines.back()));
+  EXPECT_EQ(result.Find("q_min")->number, local_lines.back().Find("q_min")->number);
+  EXPECT_NEAR(result.Find("q_mean")->number, local_lines.back().Find("q_mean")->number, 1e-12);
+  EXPECT_GT(result.Find("q_mean")->number, result.Find("q_mean_before")->number);
+}
+
+TEST_F(RemoteCliTest, RemoteQualityMatchesLocal) {
+  const RunResult local = RunGetme({"quality", kHybrid, "--json"});
+  const RunResult remote = RunGetme({"quality", kHybrid, "--json", "--server", target_});
+  ASSERT_EQ(local.exit_status, 0) << local.err;
+  ASSERT_EQ(remote.exit_status, 0) << remote.err;
+  const std::optional<JsonValue> l = ParseJson(Lines(local.out).at(0));
+  const std::optional<JsonValue> r = ParseJson(Lines(remote.out).at(0));
+  ASSERT_TRUE(l && r) << remote.out;
+  EXPECT_EQ(Keys(*r), Keys(*l));
+  for (const auto& [key, value] : l->object) {
+    const JsonValue* other = r->Find(key);
+    ASSERT_NE(other, nullptr) << key;
+    if (key == "q_mean") {
+      // Summed in the wire's element order (by type): equal to rounding.
+      EXPECT_NEAR(other->number, value.number, 1e-12);
+    } else if (key == "by_type" || key == "histogram" || key == "first_invalid") {
+      EXPECT_EQ(r->Find(key)->array.size(), value.array.size()) << key;
+    } else {
+      EXPECT_EQ(other->number, value.number) << key;
+      EXPECT_EQ(other->string, value.string) << key;
+    }
+  }
+  const std::vector<std::string> local_lines = absl::StrSplit(local.out, ",\"by_type\"");
+  const std::vector<std::string> remote_lines = absl::StrSplit(remote.out, ",\"by_type\"");
+  ASSERT_EQ(remote_lines.size(), 2u);
+  EXPECT_EQ(remote_lines[1], local_lines[1]) << "per-type statistics and histogram differ";
+}
+
+TEST(RemoteCliErrors, UnreachableServerIsUnavailable) {
+  const RunResult run =
+      RunGetme({"smooth", kHybrid, TempPath("out.vtk"), "--server", "127.0.0.1:1"});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_TRUE(absl::StrContains(run.err, "\ngetme: UNAVAILABLE: failed to connect")) << run.err;
+  const RunResult json = RunGetme({"jobs", "list", "--server", "127.0.0.1:1", "--json"});
+  EXPECT_EQ(json.exit_status, 1);
+  std::optional<JsonValue> error = ParseJson(Lines(json.out).at(0));
+  ASSERT_TRUE(error.has_value()) << json.out;
+  EXPECT_EQ(error->Find("code")->string, "UNAVAILABLE");
+}
+
+TEST_F(RemoteCliTest, InvalidMeshPrintsTheServersInvalidArgument) {
+  // A tetrahedron listing node 1 twice: not checked on the client, refused by the server.
+  const std::string input = TempPath("bad.vtk");
+  std::ofstream(input) << "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                          "POINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                          "CELLS 1 5\n4 0 1 1 3\nCELL_TYPES 1\n10\n";
+  const std::string output = TempPath("out.vtk");
+  const RunResult run = RunGetme({"smooth", input, output, "--server", target_});
+  EXPECT_EQ(run.exit_status, 1);
+  EXPECT_TRUE(absl::StrContains(run.err, "getme: INVALID_ARGUMENT: ")) << run.err;
+  EXPECT_FALSE(std::ifstream(output).good()) << "no output on failure";
+}
+
+TEST_F(RemoteCliTest, DetachListCancelQueuedJob) {
+  // One worker busy with a long job keeps the detached one queued until it is cancelled.
+  SmootherClient client(SmootherClient::CreateChannel(target_));
+  SmoothJobOptions long_job;
+  long_job.parameters = ToWireParameters(SmoothingParams());
+  absl::StatusOr<v1::Job> blocker =
+      client.SubmitJob(ToWireMesh(testing::DistortedHexBlock(40, 0.2)), long_job);
+  ASSERT_TRUE(blocker.ok()) << blocker.status();
+
+  const RunResult detached = RunGetme({"smooth", kHybrid, "--server", target_, "--detach"});
+  ASSERT_EQ(detached.exit_status, 0) << detached.err;
+  const std::string job_id = Lines(detached.out).at(0);
+  ASSERT_FALSE(job_id.empty());
+
+  const RunResult list = RunGetme({"jobs", "list", "--server", target_});
+  ASSERT_EQ(list.exit_status, 0) << list.err;
+  EXPECT_TRUE(absl::StrContains(list.out, job_id)) << list.out;
+  EXPECT_TRUE(absl::StrContains(list.out, blocker->job_id())) << list.out;
+
+  const RunResult cancel = RunGetme({"jobs", "cancel", job_id, "--server", target_, "--json"});
+  ASSERT_EQ(cancel.exit_status, 0) << cancel.err;
+  absl::StatusOr<v1::Job> job = client.GetJob(job_id);
+  for (int i = 0; i < 100 && job.ok() && job->state() != v1::JOB_STATE_CANCELLED; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    job = client.GetJob(job_id);
+  }
+  ASSERT_TRUE(job.ok()) << job.status();
+  EXPECT_EQ(job->state(), v1::JOB_STATE_CANCELLED);
+  // Watching a cancelled job ends at once and fails.
+  const RunResult watch = RunGetme({"jobs", "watch", job_id, "--server", target_});
+  EXPECT_EQ(watch.exit_status, 1) << watch.err;
+  EXPECT_TRUE(absl::StrContains(watch.err, "CANCELLED")) << watch.err;
+
+  ASSERT_TRUE(client.CancelJob(blocker->job_id()).ok());
+  const RunResult unknown = RunGetme({"jobs", "cancel", "no-such-job", "--server", target_});
+  EXPECT_EQ(unknown.exit_status, 1);
+  EXPECT_TRUE(absl::StartsWith(unknown.err, "getme: NOT_FOUND: ")) << unknown.err;
+}
+
+TEST_F(RemoteCliTest, DetachWatchFetchWritesTheLocalResult) {
+  const std::string local_out = TempPath("local.vtk");
+  ASSERT_EQ(RunGetme({"smooth", kHybrid, local_out, "--quiet", "--threads", "1"}).exit_status, 0);
+  const RunResult detached = RunGetme({"smooth", kHybrid, "--server", target_, "--detach"});
+  ASSERT_EQ(detached.exit_status, 0) << detached.err;
+  const std::string job_id = Lines(detached.out).at(0);
+  const RunResult watch = RunGetme({"jobs", "watch", job_id, "--server", target_, "--json"});
+  ASSERT_EQ(watch.exit_status, 0) << watch.err;
+  const std::vector<JsonValue> events = JsonLines(watch.out);
+  ASSERT_GE(events.size(), 2u);
+  EXPECT_EQ(events.back().Find("state")->string, "SUCCEEDED");
+  const std::string fetched = TempPath("fetched.vtk");
+  const RunResult fetch =
+      RunGetme({"jobs", "fetch", job_id, fetched, "--input", kHybrid, "--server", target_});
+  ASSERT_EQ(fetch.exit_status, 0) << fetch.err;
+  EXPECT_TRUE(ReadFile(fetched) == ReadFile(local_out)) << "fetched file differs from local";
+}
+
+}  // namespace
+}  // namespace getme::remote
