@@ -3,10 +3,12 @@
 #include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
 #include "absl/time/clock.h"
 #include "getme/mesh_quality.h"
 #include "getme/smoother.h"
 #include "getme/thread_pool.h"
+#include "getme_server/mesh_conversion.h"
 #include "getme_server/params_conversion.h"
 #include "getme_server/report_conversion.h"
 #include "spdlog/spdlog.h"
@@ -106,6 +108,17 @@ void Job::Run() {
   }
 
   absl::Status outcome = result.status();
+  if (outcome.code() == absl::StatusCode::kFailedPrecondition &&
+      work->topology.element_ids_size() > 0) {
+    // The engine names elements by number; callers who sent ids get theirs too.
+    ThreadPool ids_pool(1);
+    std::vector<std::string> ids;
+    for (ElementId e : EvaluateMeshQuality(work->mesh, ids_pool).first_invalid) {
+      ids.push_back(absl::StrCat(WireElementId(work->topology, e)));
+    }
+    outcome = absl::FailedPreconditionError(
+        absl::StrCat(outcome.message(), " (as Mesh.element_ids: ", absl::StrJoin(ids, ", "), ")"));
+  }
   double seconds = 0;
   {
     std::lock_guard lock(mutex_);

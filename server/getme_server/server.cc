@@ -63,6 +63,7 @@ class SmootherServerImpl final : public SmootherServer {
                                                  "' (address in use or malformed host:port?)"));
     }
     server_->GetHealthCheckService()->SetServingStatus(true);
+    server_->GetHealthCheckService()->SetServingStatus(v1::Smoother::service_full_name(), true);
     return absl::OkStatus();
   }
 
@@ -91,7 +92,8 @@ class SmootherServerImpl final : public SmootherServer {
   void Drain(absl::Duration grace) {
     spdlog::info("shutting down: no new calls or jobs; running jobs may finish within {}",
                  absl::FormatDuration(grace));
-    if (server_ != nullptr) server_->GetHealthCheckService()->SetServingStatus(false);
+    if (server_ != nullptr)
+      server_->GetHealthCheckService()->SetServingStatus(false);  // all services
     registry_.StopAccepting("the server is shutting down");
     const absl::Time jobs_deadline = absl::Now() + grace;
     // gRPC stops accepting calls at once and waits for the handlers (which end with their jobs).
