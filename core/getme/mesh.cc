@@ -159,12 +159,17 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
 
   std::int64_t corners = 0;
   for (ElementType type : kAllElementTypes) {
+    const ElementBlock& block = mesh.blocks_[TypeIndex(type)];
     mesh.corner_offset_[TypeIndex(type)] = corners;
-    corners += static_cast<std::int64_t>(mesh.blocks_[TypeIndex(type)].nodes.size());
+    corners += static_cast<std::int64_t>(block.nodes.size());
+    mesh.block_rank_offset_[TypeIndex(type)] =
+        static_cast<std::int64_t>(mesh.canonical_order_.size());
+    mesh.canonical_order_.insert(mesh.canonical_order_.end(), block.elements.begin(),
+                                 block.elements.end());
   }
   mesh.corner_offset_[kElementTypeCount] = corners;
 
-  // Node → corner rows (corners ascend within a row), and node → element rows (ascending ids).
+  // Node → corner rows (corners ascend within a row), and node → element rows (canonical order).
   mesh.node_corners_ = BuildRows(node_count, [&](auto&& emit) {
     for (ElementType type : kAllElementTypes) {
       const auto& nodes = mesh.blocks_[TypeIndex(type)].nodes;
@@ -175,28 +180,27 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
     }
   });
   mesh.node_elements_ = BuildRows(node_count, [&](auto&& emit) {
-    for (std::int64_t e = 0; e < element_count; ++e) {
-      for (NodeId node : mesh.element_nodes(static_cast<ElementId>(e))) {
-        emit(node, static_cast<std::int32_t>(e));
-      }
+    for (ElementId e : mesh.canonical_order_) {
+      for (NodeId node : mesh.element_nodes(e)) emit(node, e);
     }
   });
 
-  // Element neighbours: the union of the node rows of its nodes, minus itself.
+  // Element neighbours: the union of the node rows of its nodes, minus itself, canonical order.
   {
-    std::vector<ElementId> scratch;
+    std::vector<std::int32_t> ranks;
     mesh.element_neighbours_.offsets.assign(element_count + 1, 0);
     for (std::int64_t e = 0; e < element_count; ++e) {
-      scratch.clear();
+      ranks.clear();
       for (NodeId node : mesh.element_nodes(static_cast<ElementId>(e))) {
         for (ElementId other : mesh.node_elements(node)) {
-          if (other != e) scratch.push_back(other);
+          if (other != e) ranks.push_back(mesh.canonical_rank(other));
         }
       }
-      std::sort(scratch.begin(), scratch.end());
-      scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
-      mesh.element_neighbours_.items.insert(mesh.element_neighbours_.items.end(), scratch.begin(),
-                                            scratch.end());
+      std::sort(ranks.begin(), ranks.end());
+      ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+      for (std::int32_t rank : ranks) {
+        mesh.element_neighbours_.items.push_back(mesh.canonical_order_[rank]);
+      }
       mesh.element_neighbours_.offsets[e + 1] =
           static_cast<std::int64_t>(mesh.element_neighbours_.items.size());
     }

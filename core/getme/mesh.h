@@ -67,9 +67,19 @@ class Mesh {
   std::span<const std::uint8_t> boundary_flags() const { return boundary_; }
   std::int64_t boundary_face_count() const { return boundary_face_count_; }
 
-  // Elements containing the node, ascending ids.
+  // The canonical element order: all tetrahedra, then hexahedra, pyramids and prisms, each in
+  // insertion order. Every order-dependent step of the engine (sums, tie-breaks, visiting order)
+  // follows it rather than the ids, so a mesh gives bit-identical results however its elements of
+  // different types are interleaved (a file's order or the service's type-grouped wire order).
+  std::span<const ElementId> canonical_order() const { return canonical_order_; }
+  // Position of the element in canonical_order().
+  std::int32_t canonical_rank(ElementId element) const {
+    return static_cast<std::int32_t>(block_rank_offset_[TypeIndex(element_type_[element])]) +
+           block_index_[element];
+  }
+  // Elements containing the node, in canonical order.
   std::span<const ElementId> node_elements(NodeId node) const { return node_elements_.Row(node); }
-  // Elements sharing at least one node with the element (excluding itself), ascending ids.
+  // Elements sharing at least one node with the element (excluding itself), canonical order.
   std::span<const ElementId> element_neighbours(ElementId element) const {
     return element_neighbours_.Row(element);
   }
@@ -87,6 +97,8 @@ class Mesh {
   std::vector<std::int32_t> block_index_;
   std::array<ElementBlock, kElementTypeCount> blocks_;
   std::array<std::int64_t, kElementTypeCount + 1> corner_offset_{};
+  std::array<std::int64_t, kElementTypeCount> block_rank_offset_{};
+  std::vector<ElementId> canonical_order_;
   CompressedRows node_elements_;
   CompressedRows element_neighbours_;
   CompressedRows node_corners_;

@@ -62,8 +62,11 @@ std::vector<std::uint8_t> ComputeElementValidity(const Mesh& mesh, ThreadPool& p
   return valid;
 }
 
-QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& pool) {
-  const auto count = static_cast<std::int64_t>(quality.size());
+namespace {
+
+// Reduces value(0), value(1), ... value(count - 1) in fixed chunks.
+template <typename Value>
+QualitySummary SummarizeChunked(std::int64_t count, Value&& value, ThreadPool& pool) {
   if (count == 0) return {};
   const std::int64_t chunks = (count + kReductionChunk - 1) / kReductionChunk;
   std::vector<QualitySummary> partial(chunks);  // q_mean holds the chunk's sum
@@ -72,10 +75,11 @@ QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& p
       const std::int64_t end = std::min(count, (c + 1) * kReductionChunk);
       QualitySummary chunk{1.0, 0.0, 0};
       for (std::int64_t i = c * kReductionChunk; i < end; ++i) {
-        const double q = std::max(0.0, quality[i]);
+        const double raw = value(i);
+        const double q = std::max(0.0, raw);
         chunk.q_min = std::min(chunk.q_min, q);
         chunk.q_mean += q;
-        if (quality[i] < 0.0) ++chunk.invalid;
+        if (raw < 0.0) ++chunk.invalid;
       }
       partial[c] = chunk;
     }
@@ -90,11 +94,25 @@ QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& p
   return summary;
 }
 
+}  // namespace
+
+QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& pool) {
+  return SummarizeChunked(
+      static_cast<std::int64_t>(quality.size()), [&](std::int64_t i) { return quality[i]; }, pool);
+}
+
+QualitySummary SummarizeQualities(std::span<const double> quality, std::span<const ElementId> order,
+                                  ThreadPool& pool) {
+  return SummarizeChunked(
+      static_cast<std::int64_t>(order.size()), [&](std::int64_t i) { return quality[order[i]]; },
+      pool);
+}
+
 MeshQuality EvaluateMeshQuality(const Mesh& mesh, ThreadPool& pool, const QualityOptions& options) {
   const std::vector<double> quality = ComputeElementQualities(mesh, pool);
   const std::vector<double> warpage = ComputeElementWarpages(mesh, pool);
   const std::vector<std::uint8_t> valid = ComputeElementValidity(mesh, pool);
-  const QualitySummary summary = SummarizeQualities(quality, pool);
+  const QualitySummary summary = SummarizeQualities(quality, mesh.canonical_order(), pool);
 
   MeshQuality result;
   result.elements = mesh.element_count();
@@ -124,7 +142,7 @@ MeshQuality EvaluateMeshQuality(const Mesh& mesh, ThreadPool& pool, const Qualit
     result.invalid += stats.invalid;
   }
   if (warped_elements > 0) result.warpage_mean = warpage_sum / static_cast<double>(warped_elements);
-  for (std::int64_t e = 0; e < result.elements; ++e) {
+  for (std::int64_t e = 0; e < result.elements; ++e) {  // ids ascending: the caller's numbering
     if (!valid[e] && static_cast<int>(result.first_invalid.size()) < options.max_listed_invalid) {
       result.first_invalid.push_back(static_cast<ElementId>(e));
     }

@@ -57,5 +57,9 @@ struct QualitySummary {
   std::int64_t invalid = 0;  // negative entries
 };
 QualitySummary SummarizeQualities(std::span<const double> quality, ThreadPool& pool);
+// The same over quality[order[0]], quality[order[1]], ...: with Mesh::canonical_order() the sum
+// does not depend on how elements of different types are interleaved.
+QualitySummary SummarizeQualities(std::span<const double> quality, std::span<const ElementId> order,
+                                  ThreadPool& pool);
 
 }  // namespace getme

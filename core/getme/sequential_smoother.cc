@@ -50,9 +50,11 @@ class SequentialSubstep {
   const Phase phase_;
   std::vector<double> penalty_;          // π_j ≥ 0
   std::vector<double> criterion_value_;  // q(E_j) or q_γ(E_j)
-  IndexedMinHeap selection_;             // keyed by criterion + π, elements with a movable node
-  IndexedMinHeap quality_min_;           // keyed by q, every element: the mesh's q_min
-  IndexedMinHeap criterion_min_;         // keyed by the criterion, every element
+  // Keyed by criterion + π over elements with a movable node; items are canonical ranks, so ties
+  // break in the canonical order (Mesh::canonical_order).
+  IndexedMinHeap selection_;
+  IndexedMinHeap quality_min_;    // keyed by q, every element: the mesh's q_min
+  IndexedMinHeap criterion_min_;  // keyed by the criterion, every element
   double quality_sum_ = 0.0;
   ElementId last_pick_ = -1;
   ElementId blocker_ = -1;  // a neighbour that a reverted step would have inverted
@@ -82,7 +84,7 @@ bool SequentialSubstep::HasMovableNode(ElementId element) const {
 }
 
 std::int64_t SequentialSubstep::TransformWorst() {
-  ElementId pick = selection_.top();
+  ElementId pick = mesh_.canonical_order()[selection_.top()];
   if (blocker_ >= 0) {
     pick = blocker_;
     blocker_ = -1;
@@ -133,7 +135,8 @@ std::int64_t SequentialSubstep::TransformWorst() {
     for (std::size_t i = 0; i < affected_.size() && valid; ++i) {
       affected_quality_[i] = ElementQualityOrInvalid(mesh_, affected_[i]);
       valid = affected_quality_[i] >= 0.0;
-      if (!valid && params_.sequential_transform_blockers && selection_.contains(affected_[i])) {
+      if (!valid && params_.sequential_transform_blockers &&
+          selection_.contains(mesh_.canonical_rank(affected_[i]))) {
         blocker_ = affected_[i];
       }
     }
@@ -150,7 +153,7 @@ std::int64_t SequentialSubstep::TransformWorst() {
       z[b.node] = b.z;
     }
     penalty_[pick] += params_.penalty_invalid;  // Δπ_i
-    selection_.Update(pick, criterion_value_[pick] + penalty_[pick]);
+    selection_.Update(mesh_.canonical_rank(pick), criterion_value_[pick] + penalty_[pick]);
     return static_cast<std::int64_t>(pick_backup_.size());
   }
   penalty_[pick] = std::max(0.0, penalty_[pick] - params_.penalty_success);  // Δπ_s
@@ -163,8 +166,8 @@ std::int64_t SequentialSubstep::TransformWorst() {
     criterion_value_[element] = affected_criterion_[i];
     quality_min_.Update(element, q);
     criterion_min_.Update(element, criterion_value_[element]);
-    if (selection_.contains(element)) {
-      selection_.Update(element, criterion_value_[element] + penalty_[element]);
+    if (const std::int32_t rank = mesh_.canonical_rank(element); selection_.contains(rank)) {
+      selection_.Update(rank, criterion_value_[element] + penalty_[element]);
     }
   }
   return 0;
@@ -199,7 +202,8 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
     criterion_value_[e] = Criterion(element, q);
     quality_min_.Push(element, q);
     criterion_min_.Push(element, criterion_value_[e]);
-    if (HasMovableNode(element)) selection_.Push(element, criterion_value_[e]);
+    if (HasMovableNode(element))
+      selection_.Push(mesh_.canonical_rank(element), criterion_value_[e]);
   }
 
   PhaseSummary summary{phase_, 0, 0.0, 0.0, 0.0, 0};

@@ -183,9 +183,9 @@ bool Untangler::Repair(ElementId element) {
 }
 
 std::vector<ElementId> Untangler::InvalidElements() const {
-  std::vector<ElementId> invalid;
-  for (std::int64_t e = 0; e < mesh_.element_count(); ++e) {
-    if (context_.quality[e] < 0.0) invalid.push_back(static_cast<ElementId>(e));
+  std::vector<ElementId> invalid;  // canonical order, the order repairs are tried in
+  for (ElementId e : mesh_.canonical_order()) {
+    if (context_.quality[e] < 0.0) invalid.push_back(e);
   }
   return invalid;
 }
@@ -224,6 +224,7 @@ absl::StatusOr<PhaseSummary> Untangler::Run() {
   const SmoothingContext::Summary state = context_.Summarize();
   context_.FinishPhase(summary, state, phase_start);
   if (!invalid.empty()) {
+    std::sort(invalid.begin(), invalid.end());  // the caller's numbering in the message
     std::vector<ElementId> pinned;
     for (ElementId element : invalid) {
       bool any_movable = false;

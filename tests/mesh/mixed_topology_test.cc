@@ -40,17 +40,22 @@ TEST(MixedTopology, PrismCubeWithPyramidAndTetHasThirteenBoundaryFaces) {
 
 TEST(MixedTopology, PrismCubeNeighboursAndNodeElements) {
   const Mesh mesh = BuildOrDie(PrismCubeWithPyramidAndTet());
-  // Ids: 0 prism, 1 tet, 2 prism, 3 pyramid. Node 2 = (1,1,0) is in all four.
+  // Ids: 0 prism, 1 tet, 2 prism, 3 pyramid. Node 2 = (1,1,0) is in all four. Rows follow the
+  // canonical order (tet, hex, pyramid, prism; then id): 1, 3, 0, 2.
+  EXPECT_EQ(std::vector<ElementId>(mesh.canonical_order().begin(), mesh.canonical_order().end()),
+            (std::vector<ElementId>{1, 3, 0, 2}));
+  EXPECT_EQ(mesh.canonical_rank(0), 2);
+  EXPECT_EQ(mesh.canonical_rank(3), 1);
   const auto node_elements = mesh.node_elements(2);
   EXPECT_EQ(std::vector<ElementId>(node_elements.begin(), node_elements.end()),
-            (std::vector<ElementId>{0, 1, 2, 3}));
+            (std::vector<ElementId>{1, 3, 0, 2}));
   // Node 9 (tet apex) is only in the tetrahedron; node 8 (pyramid apex) in tet and pyramid.
   EXPECT_EQ(mesh.node_elements(9).size(), 1u);
   EXPECT_EQ(mesh.node_elements(8)[0], 1);
   EXPECT_EQ(mesh.node_elements(8)[1], 3);
   const auto tet_neighbours = mesh.element_neighbours(1);
   EXPECT_EQ(std::vector<ElementId>(tet_neighbours.begin(), tet_neighbours.end()),
-            (std::vector<ElementId>{0, 2, 3}));
+            (std::vector<ElementId>{3, 0, 2}));
 }
 
 // A tetrahedron resting on three of the four nodes of prism 0's y = 0 quad face: its triangle

@@ -30,10 +30,16 @@ ReferenceTopology ComputeReferenceTopology(const MeshSpec& spec) {
   const auto node_count = static_cast<std::int64_t>(spec.nodes.size());
   const auto element_count = static_cast<std::int64_t>(spec.elements.size());
   ReferenceTopology topology;
+  // The engine's canonical element order: by type (tet, hex, pyramid, prism), then by id.
+  std::vector<std::int64_t> canonical(element_count);
+  for (std::int64_t e = 0; e < element_count; ++e) canonical[e] = e;
+  std::stable_sort(canonical.begin(), canonical.end(), [&](std::int64_t a, std::int64_t b) {
+    return static_cast<int>(spec.elements[a].type) < static_cast<int>(spec.elements[b].type);
+  });
 
   topology.node_elements.resize(node_count);
   for (std::int64_t node = 0; node < node_count; ++node) {
-    for (std::int64_t e = 0; e < element_count; ++e) {
+    for (std::int64_t e : canonical) {
       const auto& nodes = spec.elements[e].nodes;
       if (std::find(nodes.begin(), nodes.end(), node) != nodes.end()) {
         topology.node_elements[node].push_back(e);
@@ -44,7 +50,7 @@ ReferenceTopology ComputeReferenceTopology(const MeshSpec& spec) {
   topology.element_neighbours.resize(element_count);
   for (std::int64_t e = 0; e < element_count; ++e) {
     const std::set<std::int64_t> mine(spec.elements[e].nodes.begin(), spec.elements[e].nodes.end());
-    for (std::int64_t other = 0; other < element_count; ++other) {
+    for (std::int64_t other : canonical) {
       if (other == e) continue;
       for (std::int64_t node : spec.elements[other].nodes) {
         if (mine.count(node) != 0) {

@@ -14,8 +14,9 @@ namespace getme::mesh_test {
 const std::vector<std::vector<int>>& ReferenceFaces(ElementType type);
 
 struct ReferenceTopology {
-  std::vector<std::vector<std::int64_t>> node_elements;       // ascending
-  std::vector<std::vector<std::int64_t>> element_neighbours;  // ascending, without the element
+  // Rows in the engine's canonical element order (by type: tet, hex, pyramid, prism; then id).
+  std::vector<std::vector<std::int64_t>> node_elements;
+  std::vector<std::vector<std::int64_t>> element_neighbours;  // without the element itself
   std::vector<bool> boundary;                                 // per node
   std::int64_t boundary_face_count = 0;
 };
