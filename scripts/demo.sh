@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The main job: installs the dependencies, builds, and smooths the bundled mixed example mesh
-# (tests/data/hybrid-example.vtk) with GETMe, showing live progress, then prints the mesh quality
-# before and after. The result is written to out/example-smoothed.vtk.
+# The main job: installs the dependencies, builds, starts getme-server on loopback, and smooths the
+# bundled mixed example mesh (tests/data/hybrid-example.vtk) through it with the getme client,
+# showing live progress, then prints the mesh quality before and after. The result is written to
+# out/example-smoothed.vtk, the server's log to out/getme-server.log.
 # Extra arguments go to `getme smooth`, e.g. scripts/demo.sh --method sequential --threads 1
 set -euo pipefail
 # shellcheck source=scripts/common.sh
@@ -10,15 +11,38 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 input="$GETME_ROOT/tests/data/hybrid-example.vtk"
 output="$GETME_ROOT/out/example-smoothed.vtk"
 getme="$GETME_ROOT/build/bin/getme"
+server_binary="$GETME_ROOT/build/bin/getme-server"
+server_log="$GETME_ROOT/out/getme-server.log"
+server_pid=""
+server_address=""
 
-# The engine runs inside the CLI process for now. To go through getme-server instead, start the
-# server on loopback in start_engine, stop it in stop_engine, and let run_getme pass its address.
-start_engine() { :; }
-stop_engine() { :; }
-run_getme() { "$getme" "$@"; }
+# Starts getme-server on a free loopback port and waits until it says which one it bound.
+start_engine() {
+  "$server_binary" --listen 127.0.0.1:0 > "$server_log" 2>&1 &
+  server_pid=$!
+  local port="" tries=0
+  while [ -z "$port" ] && [ "$tries" -lt 100 ]; do
+    kill -0 "$server_pid" 2> /dev/null || die "getme-server exited; see $server_log"
+    port="$(sed -n 's/.*getme-server listening on port \([0-9]*\).*/\1/p' "$server_log" | head -n 1)"
+    [ -n "$port" ] || sleep 0.1
+    tries=$((tries + 1))
+  done
+  [ -n "$port" ] || die "getme-server did not start listening; see $server_log"
+  server_address="127.0.0.1:$port"
+  log "getme-server listening on $server_address (log: ${server_log#"$GETME_ROOT"/})"
+}
+# SIGTERM: the server drains and exits 0.
+stop_engine() {
+  [ -n "$server_pid" ] || return 0
+  kill -TERM "$server_pid" 2> /dev/null || true
+  wait "$server_pid" 2> /dev/null || true
+  server_pid=""
+}
+run_getme() { "$getme" "$@" --server "$server_address"; }
 
 bash "$GETME_ROOT/scripts/build.sh"
 [ -x "$getme" ] || die "the build produced no $getme"
+[ -x "$server_binary" ] || die "the build produced no $server_binary"
 [ -f "$input" ] || die "example mesh $input is missing"
 mkdir -p "$(dirname "$output")"
 

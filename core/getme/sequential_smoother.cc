@@ -195,15 +195,15 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const std::int64_t cap =
       params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 50 * elements;
 
-  for (std::int64_t e = 0; e < elements; ++e) {
-    const auto element = static_cast<ElementId>(e);
-    const double q = std::max(0.0, context_.quality[e]);
+  for (ElementId element : mesh_.canonical_order()) {  // the running sum's order matters
+    const double q = std::max(0.0, context_.quality[element]);
     quality_sum_ += q;
-    criterion_value_[e] = Criterion(element, q);
+    criterion_value_[element] = Criterion(element, q);
     quality_min_.Push(element, q);
-    criterion_min_.Push(element, criterion_value_[e]);
-    if (HasMovableNode(element))
-      selection_.Push(mesh_.canonical_rank(element), criterion_value_[e]);
+    criterion_min_.Push(element, criterion_value_[element]);
+    if (HasMovableNode(element)) {
+      selection_.Push(mesh_.canonical_rank(element), criterion_value_[element]);
+    }
   }
 
   PhaseSummary summary{phase_, 0, 0.0, 0.0, 0.0, 0};
