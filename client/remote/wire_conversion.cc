@@ -43,45 +43,10 @@ TypeQuality FromWireTypeQuality(const v1::TypeQuality& wire) {
 
 }  // namespace
 
-v1::Method ToWireMethod(Method method) {
-  switch (method) {
-    case Method::kGetme:
-      return v1::METHOD_GETME;
-    case Method::kSimultaneous:
-      return v1::METHOD_SIMULTANEOUS;
-    case Method::kSequential:
-      return v1::METHOD_SEQUENTIAL;
-    case Method::kWarpage:
-      return v1::METHOD_WARPAGE;
-    case Method::kSmartLaplace:
-      return v1::METHOD_SMART_LAPLACE;
-    case Method::kLaplace:
-      break;
-  }
-  return v1::METHOD_LAPLACE;
-}
-
-Method FromWireMethod(v1::Method method) {
-  switch (method) {
-    case v1::METHOD_SIMULTANEOUS:
-      return Method::kSimultaneous;
-    case v1::METHOD_SEQUENTIAL:
-      return Method::kSequential;
-    case v1::METHOD_WARPAGE:
-      return Method::kWarpage;
-    case v1::METHOD_SMART_LAPLACE:
-      return Method::kSmartLaplace;
-    case v1::METHOD_LAPLACE:
-      return Method::kLaplace;
-    default:
-      return Method::kGetme;
-  }
-}
-
 v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   const SmoothingParams defaults;
   v1::SmoothingParameters wire;
-  wire.set_method(ToWireMethod(params.method));
+  wire.set_method(wire::ToWireMethod(params.method));
   bool any = false;
   SetPerTypeIfChanged(params.simultaneous_sigma_min, defaults.simultaneous_sigma_min,
                       *wire.mutable_simultaneous_sigma_min(), any);
@@ -120,23 +85,6 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.threads, defaults.threads, [&](int v) { wire.set_threads(v); });
   // clang-format on
   return wire;
-}
-
-Phase FromWirePhase(v1::Phase phase) {
-  switch (phase) {
-    case v1::PHASE_UNTANGLE:
-      return Phase::kUntangle;
-    case v1::PHASE_SEQUENTIAL:
-      return Phase::kSequential;
-    case v1::PHASE_WARPAGE:
-      return Phase::kWarpage;
-    case v1::PHASE_SMART_LAPLACE:
-      return Phase::kSmartLaplace;
-    case v1::PHASE_LAPLACE:
-      return Phase::kLaplace;
-    default:
-      return Phase::kSimultaneous;
-  }
 }
 
 ProgressEvent FromWireProgress(const v1::ProgressEvent& event) {

@@ -7,6 +7,7 @@
 #include "getme/v1/params.pb.h"
 #include "getme/v1/quality.pb.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_wire/enums.h"
 
 namespace getme::remote {
 
@@ -15,10 +16,13 @@ namespace getme::remote {
 // the sequential stop window and cap) keep meaning "automatic". threads 0 stays unset (the
 // server's --threads_per_job).
 v1::SmoothingParameters ToWireParameters(const SmoothingParams& params);
-v1::Method ToWireMethod(Method method);
-Method FromWireMethod(v1::Method method);  // METHOD_UNSPECIFIED → kGetme
-
-Phase FromWirePhase(v1::Phase phase);  // unknown values → kSimultaneous
+// For display: values a newer server may send fall back to GETMe / the simultaneous phase.
+inline Method FromWireMethod(v1::Method method) {
+  return wire::FromWireMethod(method).value_or(Method::kGetme);
+}
+inline Phase FromWirePhase(v1::Phase phase) {
+  return wire::FromWirePhase(phase).value_or(Phase::kSimultaneous);
+}
 
 // Wire messages as the engine structs the CLI's reports and JSON already print.
 ProgressEvent FromWireProgress(const v1::ProgressEvent& event);

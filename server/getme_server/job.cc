@@ -11,6 +11,7 @@
 #include "getme_server/mesh_conversion.h"
 #include "getme_server/params_conversion.h"
 #include "getme_server/report_conversion.h"
+#include "getme_wire/enums.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::server {
@@ -193,7 +194,7 @@ v1::Job Job::Describe() const {
   v1::Job job;
   job.set_job_id(id_);
   job.set_state(state_);
-  job.set_method(ToWireMethod(params_.method));
+  job.set_method(wire::ToWireMethod(params_.method));
   job.set_nodes(nodes_);
   job.set_elements(elements_);
   job.set_created_unix_seconds(UnixSeconds(created_));

@@ -1,31 +1,18 @@
 #include "getme_server/params_conversion.h"
 
+#include <optional>
 #include <string>
 
 #include "absl/strings/str_cat.h"
+#include "getme_wire/enums.h"
 
 namespace getme::server {
 namespace {
 
 absl::StatusOr<Method> ToEngineMethod(int method) {
-  switch (method) {
-    case v1::METHOD_UNSPECIFIED:
-    case v1::METHOD_GETME:
-      return Method::kGetme;
-    case v1::METHOD_SIMULTANEOUS:
-      return Method::kSimultaneous;
-    case v1::METHOD_SEQUENTIAL:
-      return Method::kSequential;
-    case v1::METHOD_WARPAGE:
-      return Method::kWarpage;
-    case v1::METHOD_SMART_LAPLACE:
-      return Method::kSmartLaplace;
-    case v1::METHOD_LAPLACE:
-      return Method::kLaplace;
-    default:
-      return absl::InvalidArgumentError(
-          absl::StrCat("parameters.method = ", method, " is not a known getme.v1.Method"));
-  }
+  if (std::optional<Method> known = wire::FromWireMethod(method)) return *known;
+  return absl::InvalidArgumentError(
+      absl::StrCat("parameters.method = ", method, " is not a known getme.v1.Method"));
 }
 
 void ApplyPerType(const v1::PerType& wire, PerType& values) {
@@ -100,24 +87,6 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
     return absl::InvalidArgumentError(absl::StrCat("parameters: ", valid.message()));
   }
   return params;
-}
-
-v1::Method ToWireMethod(Method method) {
-  switch (method) {
-    case Method::kGetme:
-      return v1::METHOD_GETME;
-    case Method::kSimultaneous:
-      return v1::METHOD_SIMULTANEOUS;
-    case Method::kSequential:
-      return v1::METHOD_SEQUENTIAL;
-    case Method::kWarpage:
-      return v1::METHOD_WARPAGE;
-    case Method::kSmartLaplace:
-      return v1::METHOD_SMART_LAPLACE;
-    case Method::kLaplace:
-      return v1::METHOD_LAPLACE;
-  }
-  return v1::METHOD_UNSPECIFIED;
 }
 
 }  // namespace getme::server

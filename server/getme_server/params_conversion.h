@@ -12,7 +12,4 @@ namespace getme::server {
 absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wire,
                                                int default_threads);
 
-// The wire enum of an engine method (METHOD_UNSPECIFIED never comes back).
-v1::Method ToWireMethod(Method method);
-
 }  // namespace getme::server

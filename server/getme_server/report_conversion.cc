@@ -1,6 +1,7 @@
 #include "getme_server/report_conversion.h"
 
 #include "getme_server/mesh_conversion.h"
+#include "getme_wire/enums.h"
 
 namespace getme::server {
 namespace {
@@ -34,27 +35,9 @@ v1::QualityReport ToWireReport(const MeshQuality& quality, const v1::Mesh& wire)
   return report;
 }
 
-v1::Phase ToWirePhase(Phase phase) {
-  switch (phase) {
-    case Phase::kUntangle:
-      return v1::PHASE_UNTANGLE;
-    case Phase::kSimultaneous:
-      return v1::PHASE_SIMULTANEOUS;
-    case Phase::kSequential:
-      return v1::PHASE_SEQUENTIAL;
-    case Phase::kWarpage:
-      return v1::PHASE_WARPAGE;
-    case Phase::kSmartLaplace:
-      return v1::PHASE_SMART_LAPLACE;
-    case Phase::kLaplace:
-      return v1::PHASE_LAPLACE;
-  }
-  return v1::PHASE_UNSPECIFIED;
-}
-
 v1::ProgressEvent ToWireEvent(const ProgressEvent& event) {
   v1::ProgressEvent wire;
-  wire.set_phase(ToWirePhase(event.phase));
+  wire.set_phase(wire::ToWirePhase(event.phase));
   wire.set_iteration(event.iteration);
   wire.set_q_min(event.q_min);
   wire.set_q_mean(event.q_mean);
@@ -67,7 +50,7 @@ v1::ProgressEvent ToWireEvent(const ProgressEvent& event) {
 
 v1::PhaseSummary ToWirePhaseSummary(const PhaseSummary& summary) {
   v1::PhaseSummary wire;
-  wire.set_phase(ToWirePhase(summary.phase));
+  wire.set_phase(wire::ToWirePhase(summary.phase));
   wire.set_iterations(summary.iterations);
   wire.set_seconds(summary.seconds);
   wire.set_q_min(summary.q_min);

@@ -12,7 +12,6 @@ namespace getme::server {
 // Engine quality statistics, progress and phase summaries → wire messages. Element ids in the
 // report are the caller's (Mesh.element_ids of `wire`, when given).
 v1::QualityReport ToWireReport(const MeshQuality& quality, const v1::Mesh& wire);
-v1::Phase ToWirePhase(Phase phase);
 // Without job id and sequence: the job stamps those when it publishes the event.
 v1::ProgressEvent ToWireEvent(const ProgressEvent& event);
 v1::PhaseSummary ToWirePhaseSummary(const PhaseSummary& summary);

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <optional>
+
+#include "getme/progress.h"
+#include "getme/smoothing_params.h"
+#include "getme/v1/params.pb.h"
+#include "getme/v1/smoother.pb.h"
+
+// The one mapping between the engine's enums and the wire's, shared by server and client.
+namespace getme::wire {
+
+v1::Method ToWireMethod(Method method);
+// METHOD_UNSPECIFIED is GETMe (the proto's documented default); nullopt for values this build
+// does not know (a newer peer).
+std::optional<Method> FromWireMethod(int method);
+
+v1::Phase ToWirePhase(Phase phase);
+std::optional<Phase> FromWirePhase(int phase);  // nullopt for unspecified or unknown values
+
+}  // namespace getme::wire
