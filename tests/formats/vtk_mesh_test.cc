@@ -141,7 +141,8 @@ std::int64_t FixedCountFromText(const std::string& text) {
   std::getline(rest, line);  // LOOKUP_TABLE default
   std::int64_t fixed = 0;
   double value = 0;
-  for (std::int64_t i = 0; i < DeclaredCount(text, "POINTS") && rest >> value; ++i) {
+  const std::int64_t points = DeclaredCount(text, "POINTS");
+  for (std::int64_t i = 0; i < points && rest >> value; ++i) {
     fixed += value != 0.0 ? 1 : 0;
   }
   return fixed;
