@@ -13,22 +13,25 @@ const char kMainUsage[] =
     R"(getme: GETMe smoothing of mixed volume meshes (tetrahedra, hexahedra, pyramids, prisms)
 
 Usage:
-  getme smooth IN.vtk OUT.vtk [options]   smooth a VTK legacy unstructured grid
-  getme quality IN.vtk [options]          report the element quality of a mesh
-  getme jobs list|watch|cancel|fetch      manage jobs on a getme-server
-  getme --help                            this text
-  getme --version                         the version
+  getme smooth IN OUT [options]        smooth a mesh file (.vtk .vtu .msh .mesh)
+  getme quality IN [options]           report the element quality of a mesh
+  getme report IN OUT [options]        draw quality histograms and q against time
+  getme jobs list|watch|cancel|fetch   manage jobs on a getme-server
+  getme --help                         this text
+  getme --version                      the version
 
 Run 'getme <command> --help' for the options of a command.
 )";
 
-const char kSmoothUsage[] = R"(Usage: getme smooth IN.vtk OUT.vtk [options]
+const char kSmoothUsage[] = R"(Usage: getme smooth IN OUT [options]
 
-Smooths a VTK legacy unstructured grid (ASCII or BINARY) of tetrahedra (VTK type 10),
-hexahedra (12), wedges (13) and pyramids (14), and writes it with the smoothed coordinates and
-the per-cell arrays mean_ratio, warpage and valid. Other linear cells (vertices, lines,
-triangles, quads) are kept and move with their nodes; their mean_ratio and warpage are -1.
-Nodes with a nonzero point-data value `fixed` never move; boundary nodes stay fixed unless
+Smooths the tetrahedra, hexahedra, prisms (wedges) and pyramids of a mesh file and writes it
+with the smoothed coordinates and the per-element arrays mean_ratio, warpage and valid (cell
+data; Gmsh: $ElementData; MEDIT: OUT.sol). Formats, by extension or --format: .vtk (VTK legacy,
+ASCII or BINARY), .vtu (VTK XML), .msh (Gmsh 2.2 and 4.1, ASCII or binary), .mesh (MEDIT).
+Surface cells, lines and vertices are kept with their tags and move with their nodes (their
+mean_ratio and warpage are -1), as is every other array of the input. Nodes with a nonzero
+point array `fixed` (MEDIT: RequiredVertices) never move; boundary nodes stay fixed unless
 --free-boundary is given.
 
 Options:
@@ -40,7 +43,17 @@ Options:
   --free-boundary      let boundary nodes move too
   --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
   --no-untangle        refuse a mesh with invalid elements instead of untangling it
+  --fix-physical G     keep the nodes of group G fixed: a Gmsh physical group by name, tag or
+                       DIM:TAG; a number also matches gmsh:physical / medit:ref cell data.
+                       Repeatable.
+  --fix-surfaces       keep the nodes of every surface cell, line and vertex fixed
+  --input-format F     read IN as F: vtk, vtu, msh, mesh (default: by extension, else content)
+  --format F           write OUT as F: vtk, vtu, msh (the input's version, else 4.1), msh2,
+                       msh4, mesh (default: by OUT's extension)
   --binary, --ascii    output encoding (default: the input's)
+  --compress           .vtu: zlib-compressed arrays
+  --trace FILE         record the progress events and the result as JSON lines (for
+                       'getme report --trace')
   --json               one JSON object per line on stdout: progress events, then the result
   --quiet              no progress or log lines on stderr (errors are still reported)
   --server HOST:PORT   smooth on a getme-server instead of in-process (same output; Ctrl-C
@@ -54,14 +67,15 @@ server error: "getme: CODE: message"); 2 usage error; 130 interrupted (the outpu
 written).
 )";
 
-const char kQualityUsage[] = R"(Usage: getme quality IN.vtk [options]
+const char kQualityUsage[] = R"(Usage: getme quality IN [options]
 
-Reports the mean ratio quality (paper, Def. 3) of every volume element of a VTK legacy file:
-counts and q_min / q_mean per element type and overall, invalid elements, warpage, and a
-histogram of the mean ratio.
+Reports the mean ratio quality (paper, Def. 3) of every volume element of a mesh file (.vtk,
+.vtu, .msh, .mesh): counts and q_min / q_mean per element type and overall, invalid elements,
+warpage, and a histogram of the mean ratio.
 
 Options:
   --bins N      histogram bins (default 20)
+  --input-format F  read IN as F: vtk, vtu, msh, mesh (default: by extension, else content)
   --threads N   worker threads; 0 = all cores (default)
   --json        one JSON object on stdout
   --server HOST:PORT  evaluate on a getme-server instead of in-process
@@ -80,18 +94,40 @@ Actions:
   watch ID                             live progress until the job ends (Ctrl-C stops
                                        watching; the job goes on)
   cancel ID                            cancel a queued or running job
-  fetch ID OUT.vtk --input IN.vtk      write IN.vtk with the job's smoothed coordinates to
-                                       OUT.vtk (the result can be fetched once)
+  fetch ID OUT --input IN              write IN with the job's smoothed coordinates to OUT
+                                       (the result can be fetched once)
 
 Options:
   --server HOST:PORT   the server (default 127.0.0.1:50051)
-  --input IN.vtk       fetch: the file the job was submitted from
-  --binary, --ascii    fetch: output encoding (default: the input's)
+  --input IN           fetch: the file the job was submitted from
+  --input-format F, --format F, --binary, --ascii, --compress
+                       fetch: as for 'getme smooth')
   --json               JSON objects on stdout (one per job, event or result)
   -h, --help           this text
 
 Exit status: 0 success (watch: the job succeeded); 1 failure or the watched job failed or was
 cancelled ("getme: CODE: message"); 2 usage error; 130 interrupted.
+)";
+
+const char kReportUsage[] = R"(Usage: getme report IN OUT [options]
+
+Draws what the paper's Figs. 7, 11 and 15 show: the histogram of the element mean ratio of IN
+(before smoothing) and OUT (after); and, given a trace recorded with 'getme smooth --trace FILE'
+(or the --json lines of 'getme smooth'), what Figs. 8, 12 and 16 show: q_min and q_mean against
+time, each phase marked. Plots with gnuplot (Debian package gnuplot-nox).
+
+Options:
+  --trace FILE          progress events as JSON lines
+  -o, --output FILE     the picture (default: OUT without its extension + "-report.svg")
+  --picture-format F    svg or png (default: from --output's extension, else svg)
+  --bins N              histogram bins (default 20)
+  --by-iteration        x axis: progress events in order instead of seconds
+  --title TEXT          a title above the plots
+  --data FILE           also write the plotted numbers as tab-separated text
+  --input-format F      read IN and OUT as F (default: by extension, else content)
+  -h, --help            this text
+
+Exit status: 0 success; 1 a file cannot be read or gnuplot failed; 2 usage error.
 )";
 
 namespace {
@@ -167,6 +203,47 @@ std::function<absl::Status(const std::string&)> SetTrue(bool& target) {
   };
 }
 
+std::function<absl::Status(const std::string&)> StringFlag(std::string& target) {
+  return [&target](const std::string& value) {
+    target = value;
+    return absl::OkStatus();
+  };
+}
+
+std::function<absl::Status(const std::string&)> InputFormatFlag(
+    std::optional<formats::FileFormat>& target) {
+  return [&target](const std::string& value) -> absl::Status {
+    absl::StatusOr<formats::FormatChoice> choice = formats::ParseFormatName(value);
+    if (!choice.ok()) return choice.status();
+    target = choice->format;
+    return absl::OkStatus();
+  };
+}
+
+// The flags every command that reads and writes mesh files takes. `binary` / `ascii` are
+// resolved by ResolveFileFlags once all arguments are seen.
+void AddFileFlags(FileOptions& files, bool& binary, bool& ascii,
+                  std::map<std::string, FlagSpec>& flags) {
+  flags["--input-format"] = {true, InputFormatFlag(files.input_format)};
+  flags["--format"] = {true, [&files](const std::string& value) -> absl::Status {
+                         absl::StatusOr<formats::FormatChoice> choice =
+                             formats::ParseFormatName(value);
+                         if (!choice.ok()) return choice.status();
+                         files.output_format = *choice;
+                         return absl::OkStatus();
+                       }};
+  flags["--binary"] = {false, SetTrue(binary)};
+  flags["--ascii"] = {false, SetTrue(ascii)};
+  flags["--compress"] = {false, SetTrue(files.compress)};
+}
+
+absl::Status ResolveFileFlags(bool binary, bool ascii, FileOptions& files) {
+  if (binary && ascii) return absl::InvalidArgumentError("--binary and --ascii exclude each other");
+  if (binary) files.encoding = formats::VtkEncoding::kBinary;
+  if (ascii) files.encoding = formats::VtkEncoding::kAscii;
+  return absl::OkStatus();
+}
+
 constexpr int kMaxThreads = 1024;
 
 // HOST:PORT, [IPv6]:PORT, or any other gRPC target with a scheme (unix:/path, dns:///host:port).
@@ -192,7 +269,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
   std::int64_t max_iterations = 0;
   bool binary = false;
   bool ascii = false;
-  const std::map<std::string, FlagSpec> flags = {
+  std::map<std::string, FlagSpec> flags = {
       {"--method",
        {true,
         [&](const std::string& value) -> absl::Status {
@@ -208,22 +285,30 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--free-boundary", {false, SetTrue(options.free_boundary)}},
       {"--literal", {false, SetTrue(options.literal)}},
       {"--no-untangle", {false, SetTrue(options.no_untangle)}},
-      {"--binary", {false, SetTrue(binary)}},
-      {"--ascii", {false, SetTrue(ascii)}},
+      {"--fix-physical",
+       {true,
+        [&](const std::string& value) {
+          if (value.empty()) return absl::InvalidArgumentError("--fix-physical needs a group");
+          options.fix_groups.push_back(value);
+          return absl::OkStatus();
+        }}},
+      {"--fix-surfaces", {false, SetTrue(options.fix_surfaces)}},
+      {"--trace", {true, StringFlag(options.trace)}},
       {"--json", {false, SetTrue(options.json)}},
       {"--quiet", {false, SetTrue(options.quiet)}},
       {"--server", {true, ServerFlag(options.server)}},
       {"--detach", {false, SetTrue(options.detach)}},
   };
+  AddFileFlags(options.files, binary, ascii, flags);
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("smooth", args, flags, positionals, options.help);
       !status.ok()) {
     return status;
   }
   if (options.help) return options;
-  if (binary && ascii) return absl::InvalidArgumentError("--binary and --ascii exclude each other");
-  if (binary) options.encoding = formats::VtkEncoding::kBinary;
-  if (ascii) options.encoding = formats::VtkEncoding::kAscii;
+  if (absl::Status status = ResolveFileFlags(binary, ascii, options.files); !status.ok()) {
+    return status;
+  }
   if (max_iterations > 0) options.max_iterations = max_iterations;
   if (options.detach && options.server.empty()) {
     return absl::InvalidArgumentError("--detach needs --server HOST:PORT (a job to detach from)");
@@ -234,7 +319,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
   }
   if (positionals.size() != 2) {
     return absl::InvalidArgumentError(
-        absl::StrCat("'getme smooth' needs an input and an output file (IN.vtk OUT.vtk), got ",
+        absl::StrCat("'getme smooth' needs an input and an output file (IN OUT), got ",
                      positionals.size(), " file argument", positionals.size() == 1 ? "" : "s",
                      "; see 'getme smooth --help'"));
   }
@@ -250,6 +335,7 @@ absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<st
       {"--threads", {true, IntegerFlag<int>("--threads", options.threads, 0, kMaxThreads)}},
       {"--json", {false, SetTrue(options.json)}},
       {"--server", {true, ServerFlag(options.server)}},
+      {"--input-format", {true, InputFormatFlag(options.input_format)}},
   };
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("quality", args, flags, positionals, options.help);
@@ -259,7 +345,7 @@ absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<st
   if (options.help) return options;
   if (positionals.size() != 1) {
     return absl::InvalidArgumentError(
-        absl::StrCat("'getme quality' needs one input file (IN.vtk), got ", positionals.size(),
+        absl::StrCat("'getme quality' needs one input file (IN), got ", positionals.size(),
                      " file arguments; see 'getme quality --help'"));
   }
   options.input = positionals[0];
@@ -270,31 +356,25 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
   JobsCommandOptions options;
   bool binary = false;
   bool ascii = false;
-  const std::map<std::string, FlagSpec> flags = {
+  std::map<std::string, FlagSpec> flags = {
       {"--server", {true, ServerFlag(options.server)}},
-      {"--input",
-       {true,
-        [&](const std::string& value) {
-          options.input = value;
-          return absl::OkStatus();
-        }}},
-      {"--binary", {false, SetTrue(binary)}},
-      {"--ascii", {false, SetTrue(ascii)}},
+      {"--input", {true, StringFlag(options.input)}},
       {"--json", {false, SetTrue(options.json)}},
   };
+  AddFileFlags(options.files, binary, ascii, flags);
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("jobs", args, flags, positionals, options.help);
       !status.ok()) {
     return status;
   }
   if (options.help) return options;
-  if (binary && ascii) return absl::InvalidArgumentError("--binary and --ascii exclude each other");
-  if (binary) options.encoding = formats::VtkEncoding::kBinary;
-  if (ascii) options.encoding = formats::VtkEncoding::kAscii;
+  if (absl::Status status = ResolveFileFlags(binary, ascii, options.files); !status.ok()) {
+    return status;
+  }
   if (positionals.empty()) {
     return absl::InvalidArgumentError(
-        "'getme jobs' needs an action: list, watch ID, cancel ID or fetch ID OUT.vtk --input "
-        "IN.vtk; see 'getme jobs --help'");
+        "'getme jobs' needs an action: list, watch ID, cancel ID or fetch ID OUT --input IN; "
+        "see 'getme jobs --help'");
   }
   const std::string action = positionals.front();
   // Positionals each action takes after its name, and what they are.
@@ -314,7 +394,7 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
   } else if (action == "fetch") {
     options.action = JobsAction::kFetch;
     expected = 2;
-    shape = "'getme jobs fetch ID OUT.vtk --input IN.vtk'";
+    shape = "'getme jobs fetch ID OUT --input IN'";
   } else {
     return absl::InvalidArgumentError(
         absl::StrCat("unknown jobs action '", action, "'; expected list, watch, cancel or fetch"));
@@ -328,9 +408,48 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
   if (expected >= 2) options.output = positionals[2];
   if (options.action == JobsAction::kFetch && options.input.empty()) {
     return absl::InvalidArgumentError(
-        "'getme jobs fetch' needs --input IN.vtk: the file the job was submitted from (the "
+        "'getme jobs fetch' needs --input IN: the file the job was submitted from (the "
         "server returns coordinates only)");
   }
+  return options;
+}
+
+absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std::string>& args) {
+  ReportCommandOptions options;
+  const std::map<std::string, FlagSpec> flags = {
+      {"--trace", {true, StringFlag(options.trace)}},
+      {"--picture-format",
+       {true,
+        [&](const std::string& value) {
+          if (value != "svg" && value != "png") {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--picture-format expects svg or png, got '", value, "'"));
+          }
+          options.picture_format = value;
+          return absl::OkStatus();
+        }}},
+      {"--output", {true, StringFlag(options.picture)}},
+      {"-o", {true, StringFlag(options.picture)}},
+      {"--bins", {true, IntegerFlag<int>("--bins", options.bins, 1, 1000)}},
+      {"--by-iteration", {false, SetTrue(options.by_iteration)}},
+      {"--title", {true, StringFlag(options.title)}},
+      {"--data", {true, StringFlag(options.data)}},
+      {"--input-format", {true, InputFormatFlag(options.input_format)}},
+  };
+  std::vector<std::string> positionals;
+  if (absl::Status status = ParseArguments("report", args, flags, positionals, options.help);
+      !status.ok()) {
+    return status;
+  }
+  if (options.help) return options;
+  if (positionals.size() != 2) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "'getme report' needs the mesh before and after smoothing (IN OUT), got ",
+        positionals.size(), " file argument", positionals.size() == 1 ? "" : "s",
+        "; see 'getme report --help'"));
+  }
+  options.input = positionals[0];
+  options.output = positionals[1];
   return options;
 }
 

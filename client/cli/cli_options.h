@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "formats/mesh_file.h"
 #include "formats/vtk_file.h"
 #include "getme/smoothing_params.h"
 
@@ -15,6 +16,16 @@ extern const char kMainUsage[];
 extern const char kSmoothUsage[];
 extern const char kQualityUsage[];
 extern const char kJobsUsage[];
+extern const char kReportUsage[];
+
+// How the mesh files of a command are read and written (--input-format, --format, --binary,
+// --ascii, --compress). Unset: by extension (input: else by content); the input's encoding.
+struct FileOptions {
+  std::optional<formats::FileFormat> input_format;
+  std::optional<formats::FormatChoice> output_format;
+  std::optional<formats::VtkEncoding> encoding;
+  bool compress = false;  // .vtu: zlib-compressed blocks
+};
 
 struct SmoothCommandOptions {
   bool help = false;
@@ -26,7 +37,10 @@ struct SmoothCommandOptions {
   bool free_boundary = false;
   bool literal = false;                          // the paper's literal algorithm, safeguards off
   bool no_untangle = false;                      // refuse invalid input instead of untangling it
-  std::optional<formats::VtkEncoding> encoding;  // default: the input's
+  FileOptions files;
+  std::vector<std::string> fix_groups;  // --fix-physical: physical groups / refs whose nodes stay
+  bool fix_surfaces = false;            // --fix-surfaces: nodes of every surface/line/vertex cell
+  std::string trace;                    // --trace FILE: progress events + result as JSON lines
   bool json = false;
   bool quiet = false;
   std::string server;   // HOST:PORT of a getme-server; empty = smooth in-process
@@ -36,6 +50,7 @@ struct SmoothCommandOptions {
 struct QualityCommandOptions {
   bool help = false;
   std::string input;
+  std::optional<formats::FileFormat> input_format;
   int bins = 20;
   int threads = 0;
   bool json = false;
@@ -51,9 +66,25 @@ struct JobsCommandOptions {
   std::string job_id;
   std::string input;   // fetch: the file the job was submitted from (topology, passthrough cells)
   std::string output;  // fetch: where the smoothed file goes
-  std::optional<formats::VtkEncoding> encoding;  // fetch; default: the input's
+  FileOptions files;   // fetch
   std::string server = "127.0.0.1:50051";
   bool json = false;
+};
+
+// `getme report IN OUT [--trace T] [--picture-format svg|png] [-o FILE]`: quality histograms
+// before/after and, with a trace, q_min / q_mean against time (paper Figs. 7–8, 11–12, 15–16).
+struct ReportCommandOptions {
+  bool help = false;
+  std::string input;   // the mesh before smoothing
+  std::string output;  // the mesh after smoothing
+  std::optional<formats::FileFormat> input_format;
+  std::string trace;            // JSON lines of `getme smooth --json` / `--trace`
+  std::string picture_format;   // svg or png; default: from --output's extension, else svg
+  std::string picture;          // the picture file; default OUT's stem + "-report.<format>"
+  int bins = 20;
+  bool by_iteration = false;    // x axis: progress events in order instead of seconds
+  std::string title;
+  std::string data;             // --data FILE: the plotted numbers as tab-separated text
 };
 
 // Parse the arguments after the command name. A usage error is InvalidArgument with a message
@@ -61,6 +92,7 @@ struct JobsCommandOptions {
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args);
 absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<std::string>& args);
 absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::string>& args);
+absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std::string>& args);
 
 // The engine parameters the smooth options select: method, threads, fix_boundary, and the
 // iteration cap applied to every phase.

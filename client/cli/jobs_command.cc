@@ -11,7 +11,7 @@
 #include "cli/progress_printer.h"
 #include "cli/remote_output.h"
 #include "cli/text_reports.h"
-#include "formats/vtk_reader.h"
+#include "cli/mesh_files.h"
 #include "remote/smoother_client.h"
 #include "remote/wire_conversion.h"
 #include "remote/wire_mesh.h"
@@ -94,8 +94,11 @@ int Cancel(remote::SmootherClient& client, const JobsCommandOptions& options) {
 }
 
 int Fetch(remote::SmootherClient& client, const JobsCommandOptions& options) {
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(options.input);
-  if (!file.ok()) return ReportFailure(file.status(), options.json, kExitFailure);
+  absl::StatusOr<formats::MeshDocument> document = ReadInputMesh(options.input, options.files);
+  if (!document.ok()) return ReportFailure(document.status(), options.json, kExitFailure);
+  absl::StatusOr<OutputTarget> output = ResolveOutput(*document, options.output, options.files);
+  if (!output.ok()) return ReportFailure(output.status(), options.json, kExitFailure);
+  const formats::VtkFile* file = &document->grid;
   absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(*file);
   if (!sent.ok()) return ReportFailure(sent.status(), options.json, kExitFailure);
   // The method is only on the job; ask before fetching (a fetched result is dropped).
@@ -113,8 +116,8 @@ int Fetch(remote::SmootherClient& client, const JobsCommandOptions& options) {
   const SmoothReport report =
       MakeRemoteSmoothReport(options.input, options.output, remote::FromWireMethod(job->method()),
                              *file, *sent, result->result);
-  if (absl::Status status = WriteSmoothedFile(remote::CoordinatesOf(result->mesh), options.output,
-                                              options.encoding, *file);
+  if (absl::Status status =
+          WriteSmoothedFile(remote::CoordinatesOf(result->mesh), *output, *document);
       !status.ok()) {
     return ReportFailure(status, options.json, kExitFailure);
   }

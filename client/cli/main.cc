@@ -11,6 +11,7 @@
 #include "cli/cli_options.h"
 #include "cli/failure.h"
 #include "cli/quality_command.h"
+#include "cli/report_command.h"
 #include "cli/smooth_command.h"
 #ifdef GETME_WITH_SERVICE
 #include "cli/jobs_command.h"
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
     if (!args.empty() && args.front() == "smooth") return PrintUsage(getme::cli::kSmoothUsage);
     if (!args.empty() && args.front() == "quality") return PrintUsage(getme::cli::kQualityUsage);
     if (!args.empty() && args.front() == "jobs") return PrintUsage(getme::cli::kJobsUsage);
+    if (!args.empty() && args.front() == "report") return PrintUsage(getme::cli::kReportUsage);
     return PrintUsage(getme::cli::kMainUsage);
   }
   if (command == "--version") {
@@ -103,6 +105,14 @@ int main(int argc, char** argv) {
     }
     return getme::cli::RunQualityCommand(*options);
   }
+  if (command == "report") {
+    absl::StatusOr<getme::cli::ReportCommandOptions> options =
+        getme::cli::ParseReportArguments(args);
+    if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
+    if (options->help) return PrintUsage(getme::cli::kReportUsage);
+    ConfigureLogging(/*quiet=*/false);
+    return getme::cli::RunReportCommand(*options);
+  }
   if (command == "jobs") {
     absl::StatusOr<getme::cli::JobsCommandOptions> options = getme::cli::ParseJobsArguments(args);
     if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
@@ -116,7 +126,7 @@ int main(int argc, char** argv) {
   }
   return getme::cli::ReportFailure(
       absl::InvalidArgumentError(absl::StrCat("unknown command '", command,
-                                              "'; expected 'smooth', 'quality' or 'jobs' (see "
+                                              "'; expected 'smooth', 'quality', 'report' or 'jobs' (see "
                                               "'getme --help')")),
       json, kExitUsage);
 }

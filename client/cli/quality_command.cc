@@ -7,15 +7,17 @@
 #include "cli/json_events.h"
 #include "cli/text_reports.h"
 #include "formats/vtk_mesh.h"
-#include "formats/vtk_reader.h"
+#include "formats/mesh_file.h"
 #include "getme/mesh_quality.h"
 #include "getme/thread_pool.h"
 
 namespace getme::cli {
 
 int RunQualityCommand(const QualityCommandOptions& options) {
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(options.input);
-  if (!file.ok()) return ReportFailure(file.status(), options.json, kExitFailure);
+  absl::StatusOr<formats::MeshDocument> document =
+      formats::ReadMeshDocument(options.input, options.input_format);
+  if (!document.ok()) return ReportFailure(document.status(), options.json, kExitFailure);
+  const formats::VtkFile* file = &document->grid;
   absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(*file);
   if (!converted.ok()) {
     return ReportFailure(

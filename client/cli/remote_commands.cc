@@ -1,7 +1,5 @@
 #include "cli/remote_commands.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 
 #include "absl/strings/str_cat.h"
@@ -9,11 +7,11 @@
 #include "cli/interrupt_flag.h"
 #include "cli/json_events.h"
 #include "cli/json_output.h"
-#include "cli/progress_printer.h"
 #include "cli/remote_output.h"
+#include "cli/smooth_run.h"
 #include "cli/text_reports.h"
+#include "formats/mesh_file.h"
 #include "formats/vtk_cell_type.h"
-#include "formats/vtk_reader.h"
 #include "remote/smoother_client.h"
 #include "remote/wire_conversion.h"
 #include "remote/wire_mesh.h"
@@ -41,40 +39,50 @@ int SubmitDetached(remote::SmootherClient& client, const remote::VtkWireMesh& se
   return kExitSuccess;
 }
 
+// Adds the nodes the options fix to the wire mesh's fixed list (those not on it already).
+void AddFixedNodes(const std::vector<std::uint8_t>& option_fixed, v1::Mesh& mesh) {
+  if (option_fixed.empty()) return;
+  std::vector<std::uint8_t> listed(option_fixed.size(), 0);
+  for (const std::uint32_t node : mesh.fixed_nodes()) {
+    if (node < listed.size()) listed[node] = 1;
+  }
+  for (std::size_t node = 0; node < option_fixed.size(); ++node) {
+    if (option_fixed[node] != 0 && listed[node] == 0) {
+      mesh.add_fixed_nodes(static_cast<std::uint32_t>(node));
+    }
+  }
+}
+
 }  // namespace
 
 int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
   const auto fail = [&](const absl::Status& status, int exit_status) {
     return ReportFailure(status, options.json, exit_status);
   };
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(options.input);
-  if (!file.ok()) return fail(file.status(), kExitFailure);
-  absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(*file);
-  if (!sent.ok()) return fail(WithInput(options.input, sent.status()), kExitFailure);
-
   const SmoothingParams params = ToSmoothingParams(options);
   if (absl::Status status = params.Validate(); !status.ok()) return fail(status, kExitUsage);
+  absl::StatusOr<SmoothRun> run = PrepareSmoothRun(options);
+  if (!run.ok()) return fail(run.status(), kExitFailure);
+  absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(run->document.grid);
+  if (!sent.ok()) return fail(WithInput(options.input, sent.status()), kExitFailure);
+  AddFixedNodes(run->option_fixed, sent->mesh);
+
   remote::SmoothJobOptions job;
   job.parameters = remote::ToWireParameters(params);
   job.result_options.set_coordinates_only(true);
-  spdlog::info("read {}: {} nodes, {} volume elements; smoothing on {}", options.input,
-               file->point_count(), sent->element_cells.size(), options.server);
+  spdlog::info("read {} ({}): {} nodes, {} volume elements; smoothing on {}", options.input,
+               formats::FormatDisplayName(run->document.format), run->document.grid.point_count(),
+               sent->element_cells.size(), options.server);
 
   remote::SmootherClient client(remote::SmootherClient::CreateChannel(options.server));
   if (options.detach) return SubmitDetached(client, *sent, job, options);
 
-  ProgressPrinter printer(stderr, isatty(fileno(stderr)) != 0);
+  ProgressSink sink(options, run->trace.get());
   const remote::ProgressHandler progress = [&](const v1::ProgressEvent& wire_event) {
     // The job's closing marker repeats the state of the last phase end; it is not an engine
     // event, and local mode has no such line.
     if (wire_event.final() && !wire_event.phase_done()) return;
-    const ProgressEvent event = remote::FromWireProgress(wire_event);
-    if (options.json) {
-      std::printf("%s\n", ProgressEventJson(event).c_str());
-      std::fflush(stdout);
-    } else if (!options.quiet) {
-      printer.OnEvent(event);
-    }
+    sink.OnEvent(remote::FromWireProgress(wire_event));
   };
   absl::StatusOr<remote::RemoteSmoothResult> result;
   bool interrupted = false;
@@ -85,7 +93,7 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     result = client.Smooth(sent->mesh, job, progress, call);
     interrupted = interrupt.interrupted();
   }
-  printer.Finish();
+  sink.Finish();
   if (!result.ok()) {
     if (interrupted && result.status().code() == absl::StatusCode::kCancelled) {
       return fail(absl::CancelledError(absl::StrCat("interrupted; the job was cancelled on ",
@@ -95,25 +103,25 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     }
     return ReportRemoteFailure(result.status(), options.json, kExitFailure);
   }
-  const SmoothReport report = MakeRemoteSmoothReport(options.input, options.output, options.method,
-                                                     *file, *sent, result->result);
-  if (absl::Status status = WriteSmoothedFile(remote::CoordinatesOf(result->mesh), options.output,
-                                              options.encoding, *file);
+  const SmoothReport report =
+      MakeRemoteSmoothReport(options.input, options.output, options.method, run->document.grid,
+                             *sent, result->result);
+  if (absl::Status status =
+          WriteSmoothedFile(remote::CoordinatesOf(result->mesh), *run->output, run->document);
       !status.ok()) {
     return fail(status, kExitFailure);
   }
-  if (options.json) {
-    std::printf("%s\n", SmoothResultJson(report).c_str());
-  } else {
-    std::fputs(FormatSmoothSummary(report).c_str(), stdout);
+  if (absl::Status status = FinishSmoothRun(report, options.json, *run); !status.ok()) {
+    return fail(status, kExitFailure);
   }
-  std::fflush(stdout);
   return kExitSuccess;
 }
 
 int RunRemoteQualityCommand(const QualityCommandOptions& options) {
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(options.input);
-  if (!file.ok()) return ReportFailure(file.status(), options.json, kExitFailure);
+  absl::StatusOr<formats::MeshDocument> document =
+      formats::ReadMeshDocument(options.input, options.input_format);
+  if (!document.ok()) return ReportFailure(document.status(), options.json, kExitFailure);
+  const formats::VtkFile* file = &document->grid;
   absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(*file);
   if (!sent.ok()) {
     return ReportFailure(WithInput(options.input, sent.status()), options.json, kExitFailure);

@@ -3,15 +3,14 @@
 #include "absl/strings/str_format.h"
 #include "cli/json_output.h"
 #include "formats/vtk_mesh.h"
-#include "formats/vtk_writer.h"
 #include "remote/wire_conversion.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
 
-absl::Status WriteSmoothedFile(std::span<const double> coordinates, const std::string& output,
-                               std::optional<formats::VtkEncoding> encoding,
-                               formats::VtkFile& file) {
+absl::Status WriteSmoothedFile(std::span<const double> coordinates, const OutputTarget& output,
+                               formats::MeshDocument& document) {
+  formats::VtkFile& file = document.grid;
   if (absl::Status status = remote::ApplyCoordinates(coordinates, file); !status.ok()) {
     return status;
   }
@@ -21,13 +20,7 @@ absl::Status WriteSmoothedFile(std::span<const double> coordinates, const std::s
       !status.ok()) {
     return status;
   }
-  const formats::VtkEncoding chosen = encoding.value_or(file.encoding);
-  if (absl::Status status = formats::WriteVtkFile(output, file, chosen); !status.ok()) {
-    return status;
-  }
-  spdlog::info("wrote {} ({})", output,
-               chosen == formats::VtkEncoding::kBinary ? "binary" : "ascii");
-  return absl::OkStatus();
+  return WriteOutputMesh(document, output);
 }
 
 SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "absl/status/status.h"
+#include "cli/mesh_files.h"
 #include "cli/reports.h"
 #include "formats/vtk_file.h"
 #include "getme/smoothing_params.h"
@@ -15,11 +16,10 @@ namespace getme::cli {
 
 // What the remote modes share with each other and with the local output.
 
-// Puts the smoothed coordinates into `file`, recomputes the per-cell quality arrays exactly as
-// the local mode does (so a remote run writes the same file), and writes it to `output`.
-absl::Status WriteSmoothedFile(std::span<const double> coordinates, const std::string& output,
-                               std::optional<formats::VtkEncoding> encoding,
-                               formats::VtkFile& file);
+// Puts the smoothed coordinates into the document, recomputes the per-cell quality arrays
+// exactly as the local mode does (so a remote run writes the same file), and writes it.
+absl::Status WriteSmoothedFile(std::span<const double> coordinates, const OutputTarget& output,
+                               formats::MeshDocument& document);
 
 // The report of a remote smoothing run, filled from the wire result and the sent mesh.
 SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,

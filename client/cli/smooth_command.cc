@@ -1,18 +1,12 @@
 #include "cli/smooth_command.h"
 
-#include <unistd.h>
-
 #include <csignal>
 #include <cstdio>
 
 #include "absl/strings/str_cat.h"
 #include "cli/failure.h"
-#include "cli/json_events.h"
-#include "cli/progress_printer.h"
-#include "cli/text_reports.h"
+#include "cli/smooth_run.h"
 #include "formats/vtk_mesh.h"
-#include "formats/vtk_reader.h"
-#include "formats/vtk_writer.h"
 #include "getme/smoother.h"
 #include "spdlog/spdlog.h"
 
@@ -55,11 +49,17 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   const auto fail = [&](const absl::Status& status, int exit_status) {
     return ReportFailure(status, options.json, exit_status);
   };
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(options.input);
-  if (!file.ok()) return fail(file.status(), kExitFailure);
-  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(*file);
+  const SmoothingParams params = ToSmoothingParams(options);
+  if (absl::Status status = params.Validate(); !status.ok()) return fail(status, kExitUsage);
+  absl::StatusOr<SmoothRun> run = PrepareSmoothRun(options);
+  if (!run.ok()) return fail(run.status(), kExitFailure);
+  formats::VtkFile& grid = run->document.grid;
+  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(grid);
   if (!converted.ok()) return fail(WithInput(options.input, converted.status()), kExitFailure);
   Mesh& mesh = converted->mesh;
+  for (std::size_t node = 0; node < run->option_fixed.size(); ++node) {
+    if (run->option_fixed[node] != 0) mesh.set_fixed(static_cast<NodeId>(node), true);
+  }
 
   SmoothReport report;
   report.input = options.input;
@@ -69,32 +69,22 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   for (const ElementType type : kAllElementTypes) {
     report.elements_by_type[TypeIndex(type)] = mesh.element_count(type);
   }
-  report.passthrough_cells = file->cells.size() - mesh.element_count();
+  report.passthrough_cells = grid.cells.size() - mesh.element_count();
   std::int64_t fixed_nodes = 0;
   for (const std::uint8_t fixed : mesh.fixed_flags()) fixed_nodes += fixed != 0 ? 1 : 0;
-  spdlog::info("read {}: {} nodes, {} elements, {} passthrough cells, {} fixed nodes",
-               options.input, mesh.node_count(), mesh.element_count(), report.passthrough_cells,
-               fixed_nodes);
+  spdlog::info("read {} ({}): {} nodes, {} elements, {} passthrough cells, {} fixed nodes",
+               options.input, formats::FormatDisplayName(run->document.format),
+               mesh.node_count(), mesh.element_count(), report.passthrough_cells, fixed_nodes);
 
-  const SmoothingParams params = ToSmoothingParams(options);
-  if (absl::Status status = params.Validate(); !status.ok()) return fail(status, kExitUsage);
-
-  ProgressPrinter printer(stderr, isatty(fileno(stderr)) != 0);
-  const ProgressCallback progress = [&](const ProgressEvent& event) {
-    if (options.json) {
-      std::printf("%s\n", ProgressEventJson(event).c_str());
-      std::fflush(stdout);
-    } else if (!options.quiet) {
-      printer.OnEvent(event);
-    }
-  };
+  ProgressSink sink(options, run->trace.get());
+  const ProgressCallback progress = [&](const ProgressEvent& event) { sink.OnEvent(event); };
   CancellationToken cancel;
   absl::StatusOr<SmoothingResult> result;
   {
     InterruptScope interrupt(cancel);
     result = Smooth(mesh, params, progress, &cancel);
   }
-  printer.Finish();
+  sink.Finish();
   if (!result.ok()) {
     if (result.status().code() == absl::StatusCode::kCancelled) {
       return fail(
@@ -105,23 +95,16 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   }
   report.result = *std::move(result);
 
-  if (absl::Status status = formats::UpdateFromMesh(mesh, converted->cell_elements, *file);
+  if (absl::Status status = formats::UpdateFromMesh(mesh, converted->cell_elements, grid);
       !status.ok()) {
     return fail(status, kExitFailure);
   }
-  const formats::VtkEncoding encoding = options.encoding.value_or(file->encoding);
-  if (absl::Status status = formats::WriteVtkFile(options.output, *file, encoding); !status.ok()) {
+  if (absl::Status status = WriteOutputMesh(run->document, *run->output); !status.ok()) {
     return fail(status, kExitFailure);
   }
-  spdlog::info("wrote {} ({})", options.output,
-               encoding == formats::VtkEncoding::kBinary ? "binary" : "ascii");
-
-  if (options.json) {
-    std::printf("%s\n", SmoothResultJson(report).c_str());
-  } else {
-    std::fputs(FormatSmoothSummary(report).c_str(), stdout);
+  if (absl::Status status = FinishSmoothRun(report, options.json, *run); !status.ok()) {
+    return fail(status, kExitFailure);
   }
-  std::fflush(stdout);
   return kExitSuccess;
 }
 

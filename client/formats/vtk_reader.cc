@@ -1,5 +1,6 @@
 #include "formats/vtk_reader.h"
 
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "formats/file_io.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_scanner.h"
 #include "formats/vtk_values.h"
@@ -826,22 +828,9 @@ class Parser {
 absl::StatusOr<VtkFile> ParseVtk(absl::string_view bytes) { return Parser(bytes).Parse(); }
 
 absl::StatusOr<VtkFile> ReadVtkFile(const std::string& path) {
-  std::error_code error_code;
-  if (std::filesystem::is_directory(path, error_code)) {
-    return absl::InvalidArgumentError(absl::StrCat("'", path, "' is a directory, not a VTK file"));
-  }
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) {
-    const int error = errno;
-    return absl::ErrnoToStatus(error, absl::StrCat("cannot open '", path, "'"));
-  }
-  std::ostringstream contents;
-  contents << stream.rdbuf();
-  if (stream.bad()) {
-    const int error = errno;
-    return absl::ErrnoToStatus(error, absl::StrCat("cannot read '", path, "'"));
-  }
-  absl::StatusOr<VtkFile> file = ParseVtk(contents.str());
+  absl::StatusOr<std::string> contents = ReadFileBytes(path);
+  if (!contents.ok()) return contents.status();
+  absl::StatusOr<VtkFile> file = ParseVtk(*contents);
   if (!file.ok()) {
     return absl::Status(file.status().code(), absl::StrCat(path, ": ", file.status().message()));
   }

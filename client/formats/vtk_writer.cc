@@ -1,5 +1,6 @@
 #include "formats/vtk_writer.h"
 
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <limits>
 
 #include "absl/strings/str_cat.h"
+#include "formats/file_io.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_values.h"
 
@@ -391,27 +393,7 @@ absl::Status WriteVtkFile(const std::string& path, const VtkFile& file, VtkEncod
     return absl::Status(bytes.status().code(),
                         absl::StrCat("cannot write '", path, "': ", bytes.status().message()));
   }
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
-    if (!stream) {
-      const int error = errno;
-      return absl::ErrnoToStatus(error, absl::StrCat("cannot write '", path, "'"));
-    }
-    stream.write(bytes->data(), static_cast<std::streamsize>(bytes->size()));
-    stream.close();
-    if (!stream) {
-      const int error = errno;
-      std::remove(temporary.c_str());
-      return absl::ErrnoToStatus(error, absl::StrCat("cannot write '", path, "'"));
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int error = errno;
-    std::remove(temporary.c_str());
-    return absl::ErrnoToStatus(error, absl::StrCat("cannot write '", path, "'"));
-  }
-  return absl::OkStatus();
+  return WriteFileAtomically(path, *bytes);
 }
 
 }  // namespace getme::formats

@@ -1,0 +1,71 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "absl/status/status.h"
+#include "absl/status/statusor.h"
+#include "absl/strings/string_view.h"
+#include "formats/mesh_document.h"
+
+namespace getme::formats {
+
+// A format as the command line names it, with the variant the name pins down, if any:
+// "vtk", "vtu", "msh" (Gmsh; version: the input's, else 4.1), "msh2"/"msh22", "msh4"/"msh41",
+// "mesh"/"medit". Case-insensitive. InvalidArgument listing the names otherwise.
+struct FormatChoice {
+  FileFormat format = FileFormat::kVtkLegacy;
+  std::optional<GmshVersion> gmsh_version;
+};
+absl::StatusOr<FormatChoice> ParseFormatName(absl::string_view name);
+
+// "VTK legacy", "VTK XML (.vtu)", "Gmsh MSH", "MEDIT".
+const char* FormatDisplayName(FileFormat format);
+
+// The format a path's extension names (.vtk .vtu .msh .mesh), if any.
+std::optional<FileFormat> FormatFromExtension(absl::string_view path);
+
+// The format a file's first bytes identify ("# vtk DataFile", "<?xml"/"<VTKFile",
+// "$MeshFormat", "MeshVersionFormatted"), if any.
+std::optional<FileFormat> SniffFormat(absl::string_view bytes);
+
+absl::StatusOr<MeshDocument> ParseMeshDocument(absl::string_view bytes, FileFormat format);
+
+// Reads `path` as `format`, or as its extension says, or as its content says, in that order.
+// Errors are prefixed with the path; a .meshb file and an unrecognised file are InvalidArgument
+// naming the supported formats.
+absl::StatusOr<MeshDocument> ReadMeshDocument(const std::string& path,
+                                              std::optional<FileFormat> format = std::nullopt);
+
+// The bytes of `document` as `format`.
+absl::StatusOr<std::string> SerializeMeshDocument(const MeshDocument& document, FileFormat format,
+                                                  const WriteOptions& options);
+
+// Writes atomically. MEDIT: the cell-data arrays (e.g. the quality arrays), which a .mesh
+// cannot hold, go to a .sol file beside it (OUT.mesh → OUT.sol).
+absl::Status WriteMeshDocument(const std::string& path, const MeshDocument& document,
+                               FileFormat format, const WriteOptions& options);
+
+// The path of the MEDIT solution file that goes with `mesh_path`.
+std::string MeditSolutionPath(const std::string& mesh_path);
+
+// The write options for `document` in `format`: the input's own options when the format is the
+// input's, the formats' defaults otherwise (ASCII stays ASCII, binary stays binary).
+WriteOptions DefaultWriteOptions(const MeshDocument& document, FileFormat format);
+
+// The cells (grid indices) of a named group: a Gmsh physical group by name, tag or "DIM:TAG";
+// in any format, a number also matches the cell arrays "gmsh:physical" and "medit:ref" (so a
+// .msh converted to .vtu or .mesh still selects the same cells). NotFound naming what exists.
+absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& document,
+                                                     absl::string_view group);
+
+// Node flags (1 = fixed) for every point of the nodes of the given groups' cells and, if
+// `surface_cells`, of every cell of dimension 0–2 (vertices, lines, triangles, quads: the
+// boundaries and interfaces a mesher marked).
+absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& document,
+                                                          const std::vector<std::string>& groups,
+                                                          bool surface_cells);
+
+}  // namespace getme::formats
