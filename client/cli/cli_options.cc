@@ -16,6 +16,7 @@ Usage:
   getme smooth IN OUT [options]        smooth a mesh file (.vtk .vtu .msh .mesh)
   getme quality IN [options]           report the element quality of a mesh
   getme report IN OUT [options]        draw quality histograms and q against time
+  getme convert IN OUT [options]       write a mesh in another format, unchanged
   getme jobs list|watch|cancel|fetch   manage jobs on a getme-server
   getme --help                         this text
   getme --version                      the version
@@ -128,6 +129,22 @@ Options:
   -h, --help            this text
 
 Exit status: 0 success; 1 a file cannot be read or gnuplot failed; 2 usage error.
+)";
+
+const char kConvertUsage[] = R"(Usage: getme convert IN OUT [options]
+
+Writes the mesh of IN to OUT in the format OUT's extension (or --format) names, with every
+cell, tag and array kept: .vtk (VTK legacy), .vtu (VTK XML), .msh (Gmsh 2.2 / 4.1), .mesh
+(MEDIT). Nothing is smoothed.
+
+Options:
+  --input-format F     read IN as F: vtk, vtu, msh, mesh (default: by extension, else content)
+  --format F           write OUT as F: vtk, vtu, msh, msh2, msh4, mesh
+  --binary, --ascii    output encoding (default: the input's)
+  --compress           .vtu: zlib-compressed arrays
+  -h, --help           this text
+
+Exit status: 0 success; 1 IN cannot be read or OUT cannot be written; 2 usage error.
 )";
 
 namespace {
@@ -447,6 +464,32 @@ absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std:
         "'getme report' needs the mesh before and after smoothing (IN OUT), got ",
         positionals.size(), " file argument", positionals.size() == 1 ? "" : "s",
         "; see 'getme report --help'"));
+  }
+  options.input = positionals[0];
+  options.output = positionals[1];
+  return options;
+}
+
+absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(
+    const std::vector<std::string>& args) {
+  ConvertCommandOptions options;
+  bool binary = false;
+  bool ascii = false;
+  std::map<std::string, FlagSpec> flags;
+  AddFileFlags(options.files, binary, ascii, flags);
+  std::vector<std::string> positionals;
+  if (absl::Status status = ParseArguments("convert", args, flags, positionals, options.help);
+      !status.ok()) {
+    return status;
+  }
+  if (options.help) return options;
+  if (absl::Status status = ResolveFileFlags(binary, ascii, options.files); !status.ok()) {
+    return status;
+  }
+  if (positionals.size() != 2) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "'getme convert' needs an input and an output file (IN OUT), got ", positionals.size(),
+        " file argument", positionals.size() == 1 ? "" : "s", "; see 'getme convert --help'"));
   }
   options.input = positionals[0];
   options.output = positionals[1];

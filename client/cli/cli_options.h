@@ -17,6 +17,7 @@ extern const char kSmoothUsage[];
 extern const char kQualityUsage[];
 extern const char kJobsUsage[];
 extern const char kReportUsage[];
+extern const char kConvertUsage[];
 
 // How the mesh files of a command are read and written (--input-format, --format, --binary,
 // --ascii, --compress). Unset: by extension (input: else by content); the input's encoding.
@@ -87,12 +88,21 @@ struct ReportCommandOptions {
   std::string data;             // --data FILE: the plotted numbers as tab-separated text
 };
 
+// `getme convert IN OUT`: the same mesh in another format (or encoding), nothing smoothed.
+struct ConvertCommandOptions {
+  bool help = false;
+  std::string input;
+  std::string output;
+  FileOptions files;
+};
+
 // Parse the arguments after the command name. A usage error is InvalidArgument with a message
 // that names the offending argument; `--help` anywhere sets `help` and skips the checks.
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args);
 absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<std::string>& args);
 absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::string>& args);
 absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std::string>& args);
+absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(const std::vector<std::string>& args);
 
 // The engine parameters the smooth options select: method, threads, fix_boundary, and the
 // iteration cap applied to every phase.

@@ -10,6 +10,7 @@
 #include "absl/strings/str_cat.h"
 #include "cli/cli_options.h"
 #include "cli/failure.h"
+#include "cli/convert_command.h"
 #include "cli/quality_command.h"
 #include "cli/report_command.h"
 #include "cli/smooth_command.h"
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
     if (!args.empty() && args.front() == "quality") return PrintUsage(getme::cli::kQualityUsage);
     if (!args.empty() && args.front() == "jobs") return PrintUsage(getme::cli::kJobsUsage);
     if (!args.empty() && args.front() == "report") return PrintUsage(getme::cli::kReportUsage);
+    if (!args.empty() && args.front() == "convert") return PrintUsage(getme::cli::kConvertUsage);
     return PrintUsage(getme::cli::kMainUsage);
   }
   if (command == "--version") {
@@ -113,6 +115,14 @@ int main(int argc, char** argv) {
     ConfigureLogging(/*quiet=*/false);
     return getme::cli::RunReportCommand(*options);
   }
+  if (command == "convert") {
+    absl::StatusOr<getme::cli::ConvertCommandOptions> options =
+        getme::cli::ParseConvertArguments(args);
+    if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
+    if (options->help) return PrintUsage(getme::cli::kConvertUsage);
+    ConfigureLogging(/*quiet=*/false);
+    return getme::cli::RunConvertCommand(*options);
+  }
   if (command == "jobs") {
     absl::StatusOr<getme::cli::JobsCommandOptions> options = getme::cli::ParseJobsArguments(args);
     if (!options.ok()) return getme::cli::ReportFailure(options.status(), json, kExitUsage);
@@ -126,7 +136,7 @@ int main(int argc, char** argv) {
   }
   return getme::cli::ReportFailure(
       absl::InvalidArgumentError(absl::StrCat("unknown command '", command,
-                                              "'; expected 'smooth', 'quality', 'report' or 'jobs' (see "
+                                              "'; expected 'smooth', 'quality', 'report', 'convert' or 'jobs' (see "
                                               "'getme --help')")),
       json, kExitUsage);
 }
