@@ -71,6 +71,29 @@ class RemoteCliTest : public ::testing::Test {
   std::string target_;
 };
 
+// A Gmsh file with named groups (written by gmsh): --fix-physical goes to the server as fixed
+// nodes, and the written .msh (surfaces, groups, $ElementData quality) is byte for byte the
+// local one.
+TEST_F(RemoteCliTest, RemoteSmoothOfGmshFileWithGroupsMatchesLocal) {
+  const std::string input = std::string(GETME_GROUPED_HYBRID_DIR) + "/hybrid-groups.msh";
+  const std::string local_out = TempPath("local.msh");
+  const std::string remote_out = TempPath("remote.msh");
+  const std::vector<std::string> options = {"--free-boundary", "--fix-physical", "inlet",
+                                            "--quiet"};
+  std::vector<std::string> local_args = {"smooth", input, local_out};
+  local_args.insert(local_args.end(), options.begin(), options.end());
+  const RunResult local = RunGetme(local_args);
+  ASSERT_EQ(local.exit_status, 0) << local.err;
+  std::vector<std::string> remote_args = {"smooth", input, remote_out, "--server", target_};
+  remote_args.insert(remote_args.end(), options.begin(), options.end());
+  const RunResult remote = RunGetme(remote_args);
+  ASSERT_EQ(remote.exit_status, 0) << remote.err;
+  const std::string local_bytes = ReadFile(local_out);
+  EXPECT_GT(local_bytes.size(), 1000u);
+  EXPECT_TRUE(local_bytes == ReadFile(remote_out)) << "remote and local .msh differ";
+  EXPECT_NE(local_bytes, ReadFile(input));
+}
+
 TEST_F(RemoteCliTest, RemoteSmoothWritesTheSameFileAsLocal) {
   for (const std::string& input : {kHexBlock, kHybrid}) {
     const std::string local_out = TempPath("local.vtk");
