@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The main job: installs the dependencies, builds, starts getme-server on loopback, and smooths the
 # bundled mixed example mesh (tests/data/hybrid-example.vtk) through it with the getme client,
-# showing live progress, then prints the mesh quality before and after. The result is written to
-# out/example-smoothed.vtk, the server's log to out/getme-server.log.
+# showing live progress, then prints the mesh quality before and after and draws them
+# (histograms before/after, q_min and q_mean against time). The result is written to
+# out/example-smoothed.vtk, the picture to out/example-report.svg, the server's log to
+# out/getme-server.log.
 # Extra arguments go to `getme smooth`, e.g. scripts/demo.sh --method sequential --threads 1
 set -euo pipefail
 # shellcheck source=scripts/common.sh
@@ -10,6 +12,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 input="$GETME_ROOT/tests/data/hybrid-example.vtk"
 output="$GETME_ROOT/out/example-smoothed.vtk"
+trace="$GETME_ROOT/out/example-trace.jsonl"
+picture="$GETME_ROOT/out/example-report.svg"
 getme="$GETME_ROOT/build/bin/getme"
 server_binary="$GETME_ROOT/build/bin/getme-server"
 server_log="$GETME_ROOT/out/getme-server.log"
@@ -53,10 +57,13 @@ log "Quality of the example mesh ${input#"$GETME_ROOT"/}"
 run_getme quality "$input"
 
 log "Smoothing with GETMe"
-run_getme smooth "$input" "$output" "$@"
+run_getme smooth "$input" "$output" --trace "$trace" "$@"
 
 log "Quality of the smoothed mesh ${output#"$GETME_ROOT"/}"
 run_getme quality "$output"
 
+log "Drawing the report"
+"$getme" report "$input" "$output" --trace "$trace" -o "$picture" --title "hybrid example"
+
 echo
-echo "demo: smoothed mesh written to ${output#"$GETME_ROOT"/}"
+echo "demo: smoothed mesh written to ${output#"$GETME_ROOT"/}, report to ${picture#"$GETME_ROOT"/}"
