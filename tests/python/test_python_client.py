@@ -1,176 +1,453 @@
 #!/usr/bin/python3
-"""A Python client of getme.v1.Smoother: generates stubs from the repo's protos with protoc and
-grpc_python_plugin, starts getme-server on a free loopback port, smooths a distorted 3x3x3 hex
-block in chunks, and checks the progress stream (in order, final event last) and the result
-(q_mean improved, boundary nodes unmoved). Uses Debian's python3-grpcio and python3-protobuf."""
+"""The Python client package `getme` (client/python, as built into build/python) against a real
+getme-server, with the C++ CLI's local run as the reference: meshes read and written by meshio
+(make_test_meshes.py), results compared with `getme smooth IN OUT.vtk` and `getme quality --json`
+bit for bit, progress streams checked against the report, and the error paths.
+
+Usage: test_python_client.py --package-dir build/python --server-binary getme-server
+         --cli-binary getme --meshes DIR --work-dir DIR [unittest options]
+"""
 
 import argparse
-import importlib
+import json
 import os
-import random
-import socket
+import re
 import subprocess
 import sys
 import tempfile
 import time
+import unittest
 
-PASSED = 0
-FAILED = 0
+import grpc
+import meshio
+import numpy as np
 
+from server_process import ServerProcess, unused_address
 
-def check(condition, what):
-    global PASSED, FAILED
-    if condition:
-        PASSED += 1
-        print(f"ok   {what}")
-    else:
-        FAILED += 1
-        print(f"FAIL {what}")
+ARGS = None
+SERVER = None
+getme = None  # imported from --package-dir in setUpModule
 
 
-def generate_stubs(proto_dir, out_dir):
-    protos = [os.path.join("getme", "v1", name + ".proto")
-              for name in ("mesh", "params", "quality", "smoother")]
-    subprocess.run(["/usr/bin/protoc", "-I", proto_dir, f"--python_out={out_dir}",
-                    f"--grpc_out={out_dir}",
-                    "--plugin=protoc-gen-grpc=/usr/bin/grpc_python_plugin"] + protos,
-                   check=True)
-    for package in ("getme", os.path.join("getme", "v1")):
-        open(os.path.join(out_dir, package, "__init__.py"), "a").close()
-    sys.path.insert(0, out_dir)
+def setUpModule():
+    global SERVER, getme
+    sys.path.insert(0, ARGS.package_dir)
+    import getme as package
+    getme = package
+    # The package under test, not some other installed copy.
+    assert os.path.realpath(getme.__file__).startswith(os.path.realpath(ARGS.package_dir)), \
+        getme.__file__
+    # Every progress event (no throttling), so the stream can be checked against the report.
+    SERVER = ServerProcess(ARGS.server_binary, "--progress_interval=0s", "--workers=2")
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+def tearDownModule():
+    code = SERVER.stop()
+    if code != 0:
+        raise AssertionError(f"getme-server exited {code}:\n{''.join(SERVER.log)}")
 
 
-def hex_block(n, distortion, seed):
-    """(n+1)^3 nodes, n^3 hexahedra in VTK order; interior nodes moved randomly."""
-    rng = random.Random(seed)
-    coordinates, interior = [], []
-    for k in range(n + 1):
-        for j in range(n + 1):
-            for i in range(n + 1):
-                inside = 0 < i < n and 0 < j < n and 0 < k < n
-                interior.append(inside)
-                d = [rng.uniform(-distortion, distortion) if inside else 0.0 for _ in range(3)]
-                coordinates += [i + d[0], j + d[1], k + d[2]]
-
-    def node(i, j, k):
-        return (k * (n + 1) + j) * (n + 1) + i
-
-    hexahedra = []
-    for k in range(n):
-        for j in range(n):
-            for i in range(n):
-                hexahedra += [node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
-                              node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
-                              node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)]
-    return coordinates, hexahedra, interior
+def mesh_path(name):
+    """A mesh of make_test_meshes.py by name, or a path as it is."""
+    return os.path.join(ARGS.meshes, name)
 
 
-def requests(pb, coordinates, hexahedra, nodes_per_chunk):
-    header = pb.SmoothHeader()
-    header.result_options.coordinates_only = True
-    header.expected_size.nodes = len(coordinates) // 3
-    header.expected_size.hexahedra = len(hexahedra) // 8
-    yield pb.SmoothRequest(header=header)
-    # Several chunks on purpose: fields append across chunks.
-    for start in range(0, len(coordinates), 3 * nodes_per_chunk):
-        chunk = pb.MeshChunk()
-        chunk.mesh.coordinates.extend(coordinates[start:start + 3 * nodes_per_chunk])
-        yield pb.SmoothRequest(chunk=chunk)
-    chunk = pb.MeshChunk()
-    chunk.mesh.hexahedra.extend(hexahedra)
-    yield pb.SmoothRequest(chunk=chunk)
+def manifest():
+    with open(mesh_path("meshes.json")) as f:
+        return json.load(f)
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--server-binary", required=True)
-    parser.add_argument("--proto-dir", required=True)
-    args = parser.parse_args()
+def run_cli(*args):
+    completed = subprocess.run([ARGS.cli_binary, *args], capture_output=True, text=True,
+                               timeout=120)
+    if completed.returncode != 0:
+        raise AssertionError(f"getme {' '.join(args)} failed: {completed.stderr}")
+    return completed.stdout
 
-    import grpc
 
-    with tempfile.TemporaryDirectory() as stubs:
-        generate_stubs(args.proto_dir, stubs)
-        pb = importlib.import_module("getme.v1.smoother_pb2")
-        pb_grpc = importlib.import_module("getme.v1.smoother_pb2_grpc")
+def cli_smooth(name, *options):
+    """The CLI's local (in-process) run, read back with meshio. ASCII output: meshio 5.0's
+    VTK 5.1 reader takes a binary "int" array for int64 and fails on the CLI's `valid` array;
+    the CLI prints doubles so that they read back exactly."""
+    with tempfile.TemporaryDirectory(dir=ARGS.work_dir) as directory:
+        out = os.path.join(directory, "out.vtk")
+        stdout = run_cli("smooth", mesh_path(name), out, "--json", "--quiet", "--ascii", *options)
+        result = [json.loads(line) for line in stdout.splitlines() if line.startswith("{")][-1]
+        return meshio.read(out), result
 
-        port = free_port()
-        server = subprocess.Popen([args.server_binary, f"--listen=127.0.0.1:{port}"],
-                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        try:
-            channel = grpc.insecure_channel(f"127.0.0.1:{port}")
-            grpc.channel_ready_future(channel).result(timeout=30)
-            stub = pb_grpc.SmootherStub(channel)
 
-            coordinates, hexahedra, interior = hex_block(3, 0.3, seed=5)
-            events, result, received, late_events = [], None, [], 0
-            for response in stub.Smooth(requests(pb, coordinates, hexahedra, 20), timeout=120):
-                kind = response.WhichOneof("kind")
-                if kind == "progress":
-                    late_events += result is not None
-                    events.append(response.progress)
-                elif kind == "result":
-                    result = response.result
-                else:
-                    received.extend(response.chunk.mesh.coordinates)
+def cli_quality(name, *options):
+    return json.loads(run_cli("quality", mesh_path(name), "--json", *options))
 
-            check(late_events == 0, "every progress event came before the result")
-            check(len(events) >= 3, f"{len(events)} progress events arrived")
-            check(all(b.sequence > a.sequence for a, b in zip(events, events[1:])),
-                  "event sequence numbers increase")
-            check(events and events[-1].final, "the last event is marked final")
-            check(not any(e.final for e in events[:-1]), "no event before the last is final")
-            simultaneous = [e for e in events if e.phase == pb.PHASE_SIMULTANEOUS]
-            check(simultaneous and simultaneous[0].phase < pb.PHASE_SEQUENTIAL
-                  and events.index(simultaneous[-1]) < max(
-                      i for i, e in enumerate(events) if e.phase == pb.PHASE_SEQUENTIAL),
-                  "simultaneous phase events come before sequential ones")
-            check(all(b.iteration >= a.iteration for a, b in zip(simultaneous, simultaneous[1:])),
-                  "iterations within a phase do not go back")
-            check(result is not None, "a result arrived")
-            if result is not None:
-                check(result.after.q_mean > result.before.q_mean,
-                      f"q_mean improved: {result.before.q_mean:.6f} -> {result.after.q_mean:.6f}")
-                check(result.after.q_min >= result.before.q_min, "q_min did not drop")
-                check(result.coordinates_only and result.nodes == len(coordinates) // 3,
-                      "coordinates-only result for every node")
-            check(len(received) == len(coordinates), "all coordinates came back")
-            boundary_kept = all(received[3 * v:3 * v + 3] == coordinates[3 * v:3 * v + 3]
-                                for v in range(len(interior)) if not interior[v])
-            check(boundary_kept, "boundary nodes did not move")
-            check(any(received[3 * v:3 * v + 3] != coordinates[3 * v:3 * v + 3]
-                      for v in range(len(interior)) if interior[v]), "interior nodes moved")
 
-            # An error path: a node index out of range is INVALID_ARGUMENT naming the node.
-            bad = list(hexahedra)
-            bad[5] = 999
-            try:
-                for _ in stub.Smooth(requests(pb, coordinates, bad, 1000), timeout=60):
-                    pass
-                check(False, "an out-of-range node index is refused")
-            except grpc.RpcError as error:
-                check(error.code() == grpc.StatusCode.INVALID_ARGUMENT and
-                      "999" in error.details(),
-                      f"out-of-range node index: {error.code().name}: {error.details()}")
-            channel.close()
-        finally:
-            server.terminate()
-            try:
-                code = server.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                server.kill()
-                code = -1
-            check(code == 0, f"getme-server exits 0 on SIGTERM (got {code})")
+def as_numpy(mesh):
+    """(points, cells) with one array per volume type, concatenated over meshio's blocks."""
+    cells = {}
+    for block in mesh.cells:
+        if block.type in ("tetra", "hexahedron", "wedge", "pyramid"):
+            cells.setdefault(block.type, []).append(block.data)
+    return mesh.points.copy(), {t: np.concatenate(parts) for t, parts in cells.items()}
 
-    print(f"{PASSED} passed, {FAILED} failed")
-    return 0 if FAILED == 0 else 1
+
+class Chunks(unittest.TestCase):
+    """The upload's chunking (getme._chunks), as the C++ client's MeshChunker does it."""
+
+    def test_chunks_concatenate_to_the_mesh_in_whole_items_within_budget(self):
+        from getme import _chunks, _mesh
+        points, cells = as_numpy(meshio.read(mesh_path("surface.vtk")))
+        wire = _mesh.to_wire(points, cells, fixed=[3, 5, 8])
+        budget = 1000
+        chunks = list(_chunks.mesh_chunks(wire, budget))
+        self.assertGreater(len(chunks), 50)  # ~73 kB of values in 1 kB chunks
+        sizes = {"coordinates": 3, "tetrahedra": 4, "hexahedra": 8, "wedges": 6, "pyramids": 5}
+        for chunk in chunks:
+            self.assertLessEqual(chunk.ByteSize(), budget + 64)
+            for field, per_item in sizes.items():
+                self.assertEqual(len(getattr(chunk.mesh, field)) % per_item, 0, field)
+        for field in ("coordinates", "tetrahedra", "hexahedra", "wedges", "pyramids",
+                      "fixed_nodes"):
+            joined = [v for chunk in chunks for v in getattr(chunk.mesh, field)]
+            self.assertEqual(joined, getattr(wire, field).tolist(), field)
+        # Wedges go out in VTK order, the other types as given.
+        self.assertEqual(wire.wedges.reshape(-1, 6).tolist(),
+                         cells["wedge"][:, [0, 2, 1, 3, 5, 4]].tolist())
+        self.assertEqual(wire.tetrahedra.reshape(-1, 4).tolist(), cells["tetra"].tolist())
+
+    def test_an_empty_mesh_is_one_empty_chunk(self):
+        from getme import _chunks, _mesh
+        chunks = list(_chunks.mesh_chunks(_mesh.to_wire(np.zeros((0, 3)), {})))
+        self.assertEqual(len(chunks), 1)
+        self.assertEqual(chunks[0].ByteSize(), 0)
+
+    def test_element_ids_only_when_cells_are_not_in_wire_order(self):
+        from getme import _mesh
+        mesh = meshio.read(mesh_path("surface.vtk"))  # triangles first, types interleaved
+        wire = _mesh.to_wire(mesh.points, mesh.cells)
+        counts = [len(b.data) for b in mesh.cells]
+        starts = np.cumsum([0] + counts[:-1])
+        expected = [i for t in ("tetra", "hexahedron", "wedge", "pyramid")
+                    for b, start in zip(mesh.cells, starts) if b.type == t
+                    for i in range(start, start + len(b.data))]
+        self.assertEqual(wire.element_ids.tolist(), expected)
+        points, cells = as_numpy(mesh)
+        ordered = {t: cells[t] for t in ("tetra", "hexahedron", "wedge", "pyramid")}
+        self.assertIsNone(_mesh.to_wire(points, ordered).element_ids)
+
+
+class SmoothMeshio(unittest.TestCase):
+    def test_points_match_the_cli_bit_for_bit(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        smoothed, report = getme.smooth(mesh, SERVER.address)
+        reference, _ = cli_smooth("surface.vtk")
+        self.assertIsInstance(smoothed, meshio.Mesh)
+        self.assertEqual(smoothed.points.dtype, np.float64)
+        self.assertTrue(np.array_equal(smoothed.points, reference.points))
+        self.assertFalse(np.array_equal(smoothed.points, mesh.points), "nothing moved")
+        self.assertGreater(report.q_min, report.before.q_min)
+
+    def test_report_matches_the_cli(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        _, report = getme.smooth(mesh, SERVER.address)
+        _, cli = cli_smooth("surface.vtk")
+        self.assertEqual(report.before.q_min, cli["q_min_before"])
+        self.assertEqual(report.before.q_mean, cli["q_mean_before"])
+        self.assertEqual(report.q_min, cli["q_min"])
+        self.assertEqual(report.q_mean, cli["q_mean"])
+        self.assertEqual(report.invalid_elements, cli["invalid"])
+        self.assertEqual(report.after.warpage_max, cli["warpage_max"])
+        self.assertEqual(report.after.elements, cli["elements"])
+        for phase in ("untangle", "simultaneous", "sequential", "laplace"):
+            self.assertEqual(report.iterations[phase], cli[f"iterations_{phase}"], phase)
+        self.assertEqual([(p.phase, p.iterations, p.q_min, p.q_mean) for p in report.phases],
+                         [(p["phase"], p["iterations"], p["q_min"], p["q_mean"])
+                          for p in cli["phases"]])
+        self.assertEqual(sum(report.after.histogram), cli["elements"])
+        self.assertEqual(len(report.histogram), 20)
+        self.assertTrue(report.job_id)
+
+    def test_surface_cells_and_data_come_back_untouched(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        original = meshio.read(mesh_path("surface.vtk"))
+        smoothed, _ = getme.smooth(mesh, SERVER.address)
+        self.assertEqual([b.type for b in smoothed.cells], [b.type for b in original.cells])
+        self.assertIn("triangle", [b.type for b in smoothed.cells])
+        self.assertIn("quad", [b.type for b in smoothed.cells])
+        for got, want in zip(smoothed.cells, original.cells):
+            self.assertTrue(np.array_equal(got.data, want.data), got.type)
+        self.assertEqual(sorted(smoothed.cell_data), sorted(original.cell_data))
+        for name, arrays in original.cell_data.items():
+            for got, want in zip(smoothed.cell_data[name], arrays):
+                self.assertTrue(np.array_equal(got, want), name)
+        self.assertTrue(np.array_equal(smoothed.point_data["temperature"],
+                                       original.point_data["temperature"]))
+        # The input is left as it was, and the result does not share its arrays.
+        self.assertTrue(np.array_equal(mesh.points, original.points))
+        self.assertIsNot(smoothed.cells[0].data, mesh.cells[0].data)
+
+    def test_point_data_fixed_matches_the_cli(self):
+        mesh = meshio.read(mesh_path("fixed.vtk"))
+        smoothed, _ = getme.smooth(mesh, SERVER.address)
+        reference, _ = cli_smooth("fixed.vtk")
+        self.assertTrue(np.array_equal(smoothed.points, reference.points))
+        fixed = manifest()["fixed_nodes"]
+        self.assertTrue(np.array_equal(smoothed.points[fixed], mesh.points[fixed]))
+        free = np.setdiff1d(manifest()["interior_nodes"], fixed)
+        moved = np.any(smoothed.points[free] != mesh.points[free], axis=1)
+        self.assertGreater(moved.mean(), 0.9)
+
+    def test_small_chunks_give_the_same_result(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        whole, _ = getme.smooth(mesh, SERVER.address)
+        chunked, _ = getme.smooth(mesh, SERVER.address, chunk_bytes=2048)
+        self.assertTrue(np.array_equal(whole.points, chunked.points))
+
+    def test_method_and_max_iterations_match_the_cli(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        smoothed, report = getme.smooth(mesh, SERVER.address, method="smart-laplace",
+                                        max_iterations=3, threads=2)
+        reference, cli = cli_smooth("surface.vtk", "--method", "smart-laplace",
+                                    "--max-iterations", "3")
+        self.assertTrue(np.array_equal(smoothed.points, reference.points))
+        self.assertEqual([p.phase for p in report.phases], ["smart_laplace"])
+        self.assertEqual(report.phases[0].iterations, cli["phases"][0]["iterations"])
+        self.assertLessEqual(report.phases[0].iterations, 3)
+        self.assertEqual(report.threads, 2)
+
+
+class SmoothNumpy(unittest.TestCase):
+    def test_tuple_in_tuple_out_matching_the_cli(self):
+        points, cells = as_numpy(meshio.read(mesh_path("surface.vtk")))
+        result, report = getme.smooth((points, cells), SERVER.address)
+        reference, _ = cli_smooth("surface.vtk")
+        self.assertIsInstance(result, tuple)
+        self.assertEqual(len(result), 2)
+        self.assertIs(result[1], cells)
+        self.assertTrue(np.array_equal(result[0], reference.points))
+        self.assertEqual(report.after.elements, sum(len(c) for c in cells.values()))
+
+    def test_dict_in_dict_out(self):
+        points, cells = as_numpy(meshio.read(mesh_path("surface.vtk")))
+        result, _ = getme.smooth({"points": points, "cells": cells}, SERVER.address)
+        reference, _ = cli_smooth("surface.vtk")
+        self.assertEqual(sorted(result), ["cells", "points"])
+        self.assertTrue(np.array_equal(result["points"], reference.points))
+
+    def test_fixed_mask_and_index_list_match_point_data_fixed(self):
+        points, cells = as_numpy(meshio.read(mesh_path("surface.vtk")))
+        reference, _ = cli_smooth("fixed.vtk")
+        fixed = manifest()["fixed_nodes"]
+        mask = np.zeros(len(points), dtype=bool)
+        mask[fixed] = True
+        by_mask, _ = getme.smooth((points, cells), SERVER.address, fixed=mask)
+        by_list, _ = getme.smooth((points, cells), SERVER.address, fixed=fixed)
+        self.assertTrue(np.array_equal(by_mask[0], reference.points))
+        self.assertTrue(np.array_equal(by_list[0], reference.points))
+        self.assertTrue(np.array_equal(by_list[0][fixed], points[fixed]))
+
+    def test_wedges_are_sent_in_vtk_order(self):
+        """A regular Gmsh-order prism (meshio's wedge) must reach the server as a valid element
+        of quality 1; sent unpermuted it would be inverted."""
+        regular = meshio.read(mesh_path("regular.vtk"))
+        report = getme.quality(as_numpy(regular), SERVER.address)
+        self.assertEqual(report.by_type["wedge"].count, 1)
+        self.assertAlmostEqual(report.by_type["wedge"].q_min, 1.0, delta=1e-12)
+
+
+class Progress(unittest.TestCase):
+    def test_every_event_in_order_with_a_final_one(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        events = []
+        _, report = getme.smooth(mesh, SERVER.address, progress=events.append)
+        self.assertTrue(all(isinstance(e, getme.ProgressEvent) for e in events))
+        # The server throttles nothing here: sequence numbers run 1, 2, 3, ... without gaps.
+        self.assertEqual([e.sequence for e in events], list(range(1, len(events) + 1)))
+        self.assertTrue(events[-1].final)
+        self.assertFalse(any(e.final for e in events[:-1]))
+        self.assertEqual({e.job_id for e in events}, {report.job_id})
+        phases = [e.phase for e in events if not e.final]
+        self.assertEqual(sorted(set(phases), key=phases.index), ["simultaneous", "sequential"])
+        self.assertEqual(phases, sorted(phases, key=["simultaneous", "sequential"].index))
+        # One event per simultaneous iteration, then each phase's end with the state it hands on.
+        self.assertEqual(sum(e.phase == "simultaneous" and not e.phase_done for e in events),
+                         report.iterations["simultaneous"])
+        ends = [e for e in events if e.phase_done]
+        self.assertEqual([(e.phase, e.iteration, e.q_min, e.q_mean) for e in ends],
+                         [(p.phase, p.iterations, p.q_min, p.q_mean) for p in report.phases])
+        self.assertEqual((events[-1].q_min, events[-1].q_mean), (report.q_min, report.q_mean))
+        elapsed = [e.elapsed_seconds for e in events]
+        self.assertEqual(elapsed, sorted(elapsed))
+
+    def test_an_exception_in_the_callback_cancels_and_propagates(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        seen = []
+
+        def stop_at_third(event):
+            seen.append(event)
+            if len(seen) == 3:
+                raise KeyError("stop")
+
+        with self.assertRaises(KeyError):
+            getme.smooth(mesh, SERVER.address, progress=stop_at_third)
+        self.assertEqual(len(seen), 3)
+        # The server cancelled the job: GetJob (smoother.proto) tells its final state.
+        from getme.v1 import smoother_pb2, smoother_pb2_grpc
+        with grpc.insecure_channel(SERVER.address) as channel:
+            stub = smoother_pb2_grpc.SmootherStub(channel)
+            deadline = time.monotonic() + 10
+            while True:
+                job = stub.GetJob(smoother_pb2.GetJobRequest(job_id=seen[0].job_id), timeout=10)
+                if job.state > smoother_pb2.JOB_STATE_RUNNING or time.monotonic() > deadline:
+                    break
+                time.sleep(0.05)
+        self.assertEqual(smoother_pb2.JobState.Name(job.state), "JOB_STATE_CANCELLED")
+
+
+class Quality(unittest.TestCase):
+    def assert_matches_cli(self, report, cli):
+        self.assertEqual(report.elements, cli["elements"])
+        self.assertEqual(report.q_min, cli["q_min"])
+        self.assertEqual(report.q_mean, cli["q_mean"])
+        self.assertEqual(report.invalid_elements, cli["invalid"])
+        self.assertEqual(report.warpage_max, cli["warpage_max"])
+        self.assertEqual(report.warpage_mean, cli["warpage_mean"])
+        self.assertEqual(report.histogram, cli["histogram"])
+        for name, cli_name in (("tetra", "tetrahedron"), ("hexahedron", "hexahedron"),
+                               ("wedge", "prism"), ("pyramid", "pyramid")):
+            got, want = report.by_type[name], cli["by_type"][cli_name]
+            self.assertEqual((got.count, got.q_min, got.q_mean, got.invalid_elements),
+                             (want["count"], want["q_min"], want["q_mean"], want["invalid"]),
+                             name)
+
+    def test_matches_cli_json(self):
+        report = getme.quality(meshio.read(mesh_path("surface.vtk")), SERVER.address)
+        self.assertIsInstance(report, getme.QualityReport)
+        self.assert_matches_cli(report, cli_quality("surface.vtk"))
+
+    def test_bins(self):
+        report = getme.quality(meshio.read(mesh_path("surface.vtk")), SERVER.address, bins=7)
+        self.assertEqual(len(report.histogram), 7)
+        self.assert_matches_cli(report, cli_quality("surface.vtk", "--bins", "7"))
+
+    def test_invalid_elements_are_named_by_cell_index(self):
+        report = getme.quality(meshio.read(mesh_path("inverted.vtk")), SERVER.address)
+        cli = cli_quality("inverted.vtk")
+        self.assert_matches_cli(report, cli)
+        inverted = manifest()["inverted_cells"]
+        self.assertEqual(sorted(report.first_invalid_elements), inverted)
+        self.assertEqual(sorted(cli["first_invalid_cells"]), inverted)
+        self.assertEqual([t.invalid_elements for t in report.by_type.values()], [1, 1, 1, 1])
+
+    def test_regular_element_of_each_type_has_quality_one(self):
+        report = getme.quality(meshio.read(mesh_path("regular.vtk")), SERVER.address)
+        self.assert_matches_cli(report, cli_quality("regular.vtk"))
+        for name, quality in report.by_type.items():
+            self.assertEqual(quality.count, 1, name)
+            self.assertEqual(quality.invalid_elements, 0, name)
+            self.assertAlmostEqual(quality.q_min, 1.0, delta=1e-12, msg=name)
+
+
+class Errors(unittest.TestCase):
+    def assert_error(self, context, code, *fragments):
+        error = context.exception
+        self.assertIsInstance(error, getme.Error)
+        self.assertEqual(error.code, code, error.details)
+        for fragment in fragments:
+            self.assertIn(fragment, error.details)
+        self.assertIn(error.details, str(error))
+
+    def test_invalid_mesh_without_untangling(self):
+        # The server refuses it with FAILED_PRECONDITION (a valid request for a mesh in the
+        # wrong state), naming the first invalid element by its cell index.
+        mesh = meshio.read(mesh_path("inverted.vtk"))
+        with self.assertRaises(getme.Error) as context:
+            getme.smooth(mesh, SERVER.address, untangle=False)
+        self.assert_error(context, grpc.StatusCode.FAILED_PRECONDITION, "invalid")
+        named = re.search(r"element_ids: ([0-9, ]+)\)", context.exception.details)
+        self.assertIsNotNone(named, context.exception.details)
+        self.assertEqual(sorted(int(i) for i in named.group(1).split(", ")),
+                         manifest()["inverted_cells"])
+
+    def test_invalid_mesh_is_untangled_by_default(self):
+        # An interior node pushed through its neighbours inverts elements that untangling can
+        # repair (unlike inverted.vtk's cells, whose boundary nodes are fixed).
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        mesh.points[manifest()["interior_nodes"][0]] += [1.2, 0, 0]
+        smoothed, report = getme.smooth(mesh, SERVER.address)
+        self.assertGreater(report.before.invalid_elements, 0)
+        self.assertEqual(report.invalid_elements, 0)
+        self.assertGreater(report.iterations["untangle"], 0)
+        with tempfile.TemporaryDirectory(dir=ARGS.work_dir) as directory:
+            tangled = os.path.join(directory, "tangled.vtk")
+            meshio.write(tangled, mesh, file_format="vtk")
+            reference, cli = cli_smooth(tangled)
+        self.assertEqual(cli["invalid_before"], report.before.invalid_elements)
+        self.assertTrue(np.array_equal(smoothed.points, reference.points))
+
+    def test_node_index_out_of_range(self):
+        points, cells = as_numpy(meshio.read(mesh_path("surface.vtk")))
+        cells["tetra"][3, 2] = len(points) + 7
+        with self.assertRaises(getme.Error) as context:
+            getme.smooth((points, cells), SERVER.address)
+        self.assert_error(context, grpc.StatusCode.INVALID_ARGUMENT, str(len(points) + 7),
+                          "out of range")
+
+    def test_fixed_node_out_of_range(self):
+        points, cells = as_numpy(meshio.read(mesh_path("surface.vtk")))
+        with self.assertRaises(getme.Error) as context:
+            getme.smooth((points, cells), SERVER.address, fixed=[1, len(points)])
+        self.assert_error(context, grpc.StatusCode.INVALID_ARGUMENT, "fixed_nodes",
+                          str(len(points)))
+
+    def test_parameter_out_of_range(self):
+        mesh = meshio.read(mesh_path("regular.vtk"))
+        with self.assertRaises(getme.Error) as context:
+            getme.smooth(mesh, SERVER.address, simultaneous_rho=3.0)
+        self.assert_error(context, grpc.StatusCode.INVALID_ARGUMENT, "simultaneous_rho")
+
+    def test_unknown_parameters_are_a_type_error_before_any_call(self):
+        mesh = meshio.read(mesh_path("regular.vtk"))
+        with self.assertRaises(TypeError) as context:
+            getme.smooth(mesh, unused_address(), sigma=1.0, max_iteration=5)
+        self.assertIn("max_iteration, sigma", str(context.exception))
+
+    def test_parameter_of_the_wrong_type(self):
+        mesh = meshio.read(mesh_path("regular.vtk"))
+        for params in ({"threads": "2"}, {"untangle": 1}, {"simultaneous_rho": "0.5"},
+                       {"sequential_sigma": 0.8}):
+            with self.assertRaises(TypeError, msg=str(params)):
+                getme.smooth(mesh, unused_address(), **params)
+        with self.assertRaises(ValueError):
+            getme.smooth(mesh, unused_address(), method="gradient")
+
+    def test_unsupported_cell_type(self):
+        points = np.zeros((10, 3))
+        with self.assertRaises(ValueError) as context:
+            getme.smooth((points, {"tetra10": np.arange(10)[None, :]}), unused_address())
+        self.assertIn("tetra10", str(context.exception))
+
+    def test_server_down(self):
+        mesh = meshio.read(mesh_path("regular.vtk"))
+        with self.assertRaises(getme.Error) as context:
+            getme.smooth(mesh, unused_address(), timeout=30)
+        self.assert_error(context, grpc.StatusCode.UNAVAILABLE)
+        with self.assertRaises(getme.Error) as context:
+            getme.quality(mesh, unused_address(), timeout=30)
+        self.assert_error(context, grpc.StatusCode.UNAVAILABLE)
+
+    def test_timeout(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        with self.assertRaises(getme.Error) as context:
+            getme.smooth(mesh, SERVER.address, timeout=0.001)
+        self.assert_error(context, grpc.StatusCode.DEADLINE_EXCEEDED)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--package-dir", required=True)
+    parser.add_argument("--server-binary", required=True)
+    parser.add_argument("--cli-binary", required=True)
+    parser.add_argument("--meshes", required=True)
+    parser.add_argument("--work-dir", required=True)
+    ARGS, rest = parser.parse_known_args()
+    os.makedirs(ARGS.work_dir, exist_ok=True)
+    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)

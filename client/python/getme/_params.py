@@ -1,0 +1,128 @@
+"""Keyword arguments → getme.v1.SmoothingParameters, field by field from the proto's descriptor,
+so every field of params.proto is accepted by its name and nothing else is."""
+
+from __future__ import annotations
+
+import numbers
+from typing import Any, Dict
+
+from google.protobuf.descriptor import FieldDescriptor
+
+from getme._stubs import params_pb2
+
+# The CLI's --max-iterations: one cap for every phase (client/cli/cli_options.cc).
+MAX_ITERATIONS = "max_iterations"
+_MAX_ITERATIONS_FIELDS = ("untangle_max_iterations", "simultaneous_max_iterations",
+                          "sequential_max_iterations", "laplace_max_iterations")
+
+# PerType keys: the proto's names, and meshio's names for the same types (a meshio "wedge" is the
+# engine's prism).
+_PER_TYPE_KEYS = {
+    "tetrahedron": "tetrahedron", "tetra": "tetrahedron",
+    "hexahedron": "hexahedron",
+    "pyramid": "pyramid",
+    "prism": "prism", "wedge": "prism",
+}
+
+_FIELDS = {f.name: f for f in params_pb2.SmoothingParameters.DESCRIPTOR.fields}
+
+
+def parameter_names():
+    """The names smooth() accepts as parameters, sorted."""
+    return sorted(list(_FIELDS) + [MAX_ITERATIONS])
+
+
+def check_names(params: Dict[str, Any]) -> None:
+    """TypeError naming every unknown parameter."""
+    unknown = sorted(name for name in params if name not in _FIELDS and name != MAX_ITERATIONS)
+    if unknown:
+        raise TypeError(f"unknown smoothing parameter{'s' if len(unknown) > 1 else ''} "
+                        f"{', '.join(unknown)} (known: {', '.join(parameter_names())})")
+
+
+def _method(value) -> int:
+    enum = params_pb2.Method
+    if isinstance(value, str):
+        name = value.strip().upper().replace("-", "_")
+        if not name.startswith("METHOD_"):
+            name = "METHOD_" + name
+        if name in enum.keys():
+            return enum.Value(name)
+        choices = ", ".join(k[len("METHOD_"):].lower() for k in enum.keys()
+                            if k != "METHOD_UNSPECIFIED")
+        raise ValueError(f"parameter method: unknown method {value!r} (one of {choices})")
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
+        if int(value) in enum.values():
+            return int(value)
+        raise ValueError(f"parameter method: {value} is no getme.v1.Method value")
+    raise TypeError(f"parameter method: expected a method name such as 'getme', got {value!r}")
+
+
+def _set_per_type(name: str, value, message) -> None:
+    if isinstance(value, params_pb2.PerType):
+        message.CopyFrom(value)
+        return
+    if not isinstance(value, dict):
+        raise TypeError(f"parameter {name}: expected a dict of element type → value "
+                        f"(keys {', '.join(sorted(_PER_TYPE_KEYS))}), got {value!r}")
+    seen = {}
+    for key, type_value in value.items():
+        wire_key = _PER_TYPE_KEYS.get(key)
+        if wire_key is None:
+            raise ValueError(f"parameter {name}: unknown element type {key!r} "
+                             f"(one of {', '.join(sorted(_PER_TYPE_KEYS))})")
+        if wire_key in seen:
+            raise ValueError(f"parameter {name}: {key!r} and {seen[wire_key]!r} name the same type")
+        seen[wire_key] = key
+        if type_value is None:
+            continue
+        _check_number(f"{name}[{key!r}]", type_value, integral=False)
+        setattr(message, wire_key, float(type_value))
+
+
+def _check_number(name: str, value, integral: bool) -> None:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"parameter {name}: expected a number, got {value!r}")
+    if integral and not isinstance(value, numbers.Integral):
+        raise TypeError(f"parameter {name}: expected an integer, got {value!r}")
+
+
+def to_proto(params: Dict[str, Any]):
+    """The SmoothingParameters for smooth()'s keyword arguments. A value None leaves the field
+    unset (the server's default); max_iterations sets every *_max_iterations not given itself.
+    TypeError for unknown names or values of the wrong type, ValueError for unknown method or
+    element type names. Value ranges are the server's to check (INVALID_ARGUMENT naming the
+    field)."""
+    check_names(params)
+    message = params_pb2.SmoothingParameters()
+    values = dict(params)
+    cap = values.pop(MAX_ITERATIONS, None)
+    if cap is not None:
+        for name in _MAX_ITERATIONS_FIELDS:
+            if values.get(name) is None:
+                values[name] = cap
+    for name, value in values.items():
+        if value is None:
+            continue
+        descriptor = _FIELDS[name]
+        if name == "method":
+            message.method = _method(value)
+        elif descriptor.type == FieldDescriptor.TYPE_MESSAGE:
+            _set_per_type(name, value, getattr(message, name))
+        elif descriptor.type == FieldDescriptor.TYPE_BOOL:
+            if not isinstance(value, bool) and type(value).__name__ != "bool_":
+                raise TypeError(f"parameter {name}: expected True or False, got {value!r}")
+            setattr(message, name, bool(value))
+        elif descriptor.type in (FieldDescriptor.TYPE_DOUBLE, FieldDescriptor.TYPE_FLOAT):
+            _check_number(name, value, integral=False)
+            setattr(message, name, float(value))
+        else:
+            _check_number(name, value, integral=True)
+            try:
+                setattr(message, name, int(value))
+            except ValueError as error:  # out of the field's integer range
+                raise ValueError(f"parameter {name}: {error}") from error
+    return message
+
+
+__all__ = ["to_proto", "check_names", "parameter_names"]
