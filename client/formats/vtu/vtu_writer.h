@@ -21,7 +21,8 @@ namespace getme::formats {
 // TextureCoordinates and GlobalIds section of the point and cell data that fits the role is
 // named by <PointData Scalars="…" …> so ParaView colours by it; all other arrays are plain
 // DataArrays in section order (ParseVtu reads them back as vtu_reader.h says). Lookup tables,
-// whose length is not the point or cell count, go to the grid's <FieldData>. The grid's title and
+// whose length is not the point or cell count, go to the grid's <FieldData>; the lookup table a
+// SCALARS section names is not kept (it reads back as "default"). The grid's title and
 // legacy version have no place in the format and are not written.
 //
 // InvalidArgument if the grid is inconsistent (as SerializeVtk checks: array lengths, node ids,

@@ -279,12 +279,17 @@ TEST(VtuMalformed, PiecesThatDoNotMatch) {
 }
 
 // Random damage to every layout: an error or a file, never a crash or an allocation the input
-// cannot back (run under the sanitizer stage of scripts/test.sh).
+// cannot back (run under the sanitizer stage of scripts/test.sh). The bases cover every layout,
+// both byte orders, several pieces and appended base64.
 TEST(VtuMalformed, RandomDamageNeverCrashes) {
   std::mt19937 random(7);
   for (const std::string& base :
        {std::string(kTets), Binary(VtuLayout::kInline, false), Binary(VtuLayout::kInline, true),
-        Binary(VtuLayout::kAppended, false), Binary(VtuLayout::kAppended, true)}) {
+        Binary(VtuLayout::kAppended, false), Binary(VtuLayout::kAppended, true),
+        testing::ReadText(testing::FixturePath("hand_big_endian_zlib_uint64.vtu")),
+        testing::ReadText(testing::FixturePath("hand_appended_raw_two_pieces.vtu")),
+        testing::ReadText(testing::FixturePath("hand_appended_base64_zlib.vtu"))}) {
+    ASSERT_FALSE(base.empty());
     for (int trial = 0; trial < 300; ++trial) {
       std::string text = base;
       const int damage = 1 + static_cast<int>(random() % 4);
