@@ -68,7 +68,9 @@ struct GmshDataView {
 // A section kept byte for byte (its body between the "$Name" line and "$EndName"): $Comments,
 // $Periodic, $PartitionedEntities, $ElementNodeData, $InterpolationScheme and anything unknown.
 // Written back only in the same version and encoding, and only while the node and element tags
-// it may refer to are kept; otherwise the writer names it in a warning.
+// it may refer to are kept; otherwise the writer names it in a warning. $Comments and
+// $InterpolationScheme are text that refers to no tag (Gmsh writes them as text in binary files
+// too) and are always written back.
 struct GmshRawSection {
   std::string name;  // without '$'
   std::string body;

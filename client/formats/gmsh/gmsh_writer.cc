@@ -131,7 +131,10 @@ class Writer {
           }
         } else if (next_raw < extras->raw_sections.size()) {
           const GmshRawSection& raw = extras->raw_sections[next_raw++];
-          if (raw_allowed) {
+          // Text sections that refer to no tag fit any variant; $ElementData string tags name
+          // $InterpolationScheme's schemes, so it must not be lost.
+          const bool portable = raw.name == "Comments" || raw.name == "InterpolationScheme";
+          if (raw_allowed || portable) {
             out_.text().append(absl::StrCat("$", raw.name, "\n", raw.body, "$End", raw.name, "\n"));
           } else {
             spdlog::warn(

@@ -276,25 +276,52 @@ class WarningCapture {
 };
 
 TEST(GmshWarnings, RawSectionsOfAnotherVariantAreNamed) {
-  const absl::StatusOr<MeshDocument> document = ParseGmshFile(GmshInput("views_41_ascii.msh"));
+  // A $Periodic section (4.1: one link, surface 4 to 3, no affine transform, one node pair).
+  constexpr char kPeriodic[] = "$Periodic\n1\n2 4 3\n0\n1\n1000 1007\n$EndPeriodic\n";
+  const absl::StatusOr<MeshDocument> document =
+      ParseGmsh(ReadBytes(GmshInput("hybrid_41_ascii.msh")) + kPeriodic);
   ASSERT_TRUE(document.ok()) << document.status();
-  ASSERT_FALSE(document->gmsh->raw_sections.empty());
-  EXPECT_EQ(document->gmsh->raw_sections[0].name, "InterpolationScheme");
+  ASSERT_EQ(document->gmsh->raw_sections.size(), 1u);
+  EXPECT_EQ(document->gmsh->raw_sections[0].name, "Periodic");
+  EXPECT_EQ(document->gmsh->raw_sections[0].body, "1\n2 4 3\n0\n1\n1000 1007\n");
   {
     WarningCapture capture;
-    ASSERT_TRUE(SerializeGmsh(*document, document->as_read).ok());
+    const absl::StatusOr<std::string> bytes = SerializeGmsh(*document, document->as_read);
+    ASSERT_TRUE(bytes.ok());
     EXPECT_EQ(capture.Text(), "");
+    EXPECT_TRUE(bytes->ends_with(kPeriodic));
   }
   WarningCapture capture;
   WriteOptions options = document->as_read;
   options.encoding = VtkEncoding::kBinary;
   const absl::StatusOr<std::string> bytes = SerializeGmsh(*document, options);
   ASSERT_TRUE(bytes.ok());
-  EXPECT_NE(capture.Text().find("section $InterpolationScheme of the input (MSH 4.1 ASCII) "
-                                "cannot be carried over to MSH 4.1 binary; it is left out"),
+  EXPECT_NE(capture.Text().find("section $Periodic of the input (MSH 4.1 ASCII) cannot be "
+                                "carried over to MSH 4.1 binary; it is left out"),
             std::string::npos)
       << capture.Text();
-  EXPECT_EQ(bytes->find("$InterpolationScheme"), std::string::npos);
+  EXPECT_EQ(bytes->find("$Periodic"), std::string::npos);
+}
+
+TEST(GmshWarnings, InterpolationSchemesGoWithTheirViews) {
+  // $ElementData names its scheme; the scheme section is text, so it is kept in any variant.
+  const absl::StatusOr<MeshDocument> document = ParseGmshFile(GmshInput("views_41_ascii.msh"));
+  ASSERT_TRUE(document.ok()) << document.status();
+  // One per view Gmsh appended.
+  const std::vector<GmshRawSection>& raw = document->gmsh->raw_sections;
+  ASSERT_EQ(raw.size(), 2u);
+  EXPECT_EQ(raw[0].name, "InterpolationScheme");
+  WarningCapture capture;
+  for (const GmshVariant& variant : AllGmshVariants()) {
+    const absl::StatusOr<MeshDocument> read = WriteAndParse(*document, variant.options);
+    ASSERT_TRUE(read.ok()) << read.status();
+    ASSERT_EQ(read->gmsh->raw_sections.size(), raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      EXPECT_EQ(read->gmsh->raw_sections[i].name, raw[i].name);
+      EXPECT_EQ(read->gmsh->raw_sections[i].body, raw[i].body);
+    }
+  }
+  EXPECT_EQ(capture.Text(), "");
 }
 
 TEST(GmshWarnings, SeveralGroupsOfAnEntityIn22AreNamed) {
@@ -311,8 +338,9 @@ TEST(GmshWarnings, SeveralGroupsOfAnEntityIn22AreNamed) {
 
 // ---- Files for check_gmsh_reads_outputs.py ----
 
-// What Gmsh must find in a file we wrote: node count, elements by Gmsh type, physical groups
-// with their element counts, views with their entry counts.
+// What Gmsh must find in a file we wrote (`document`: as we read it back): node count,
+// elements by Gmsh type, physical groups with their element counts, views with their time step
+// and entry count.
 std::string Summary(const MeshDocument& document) {
   std::string text = "nodes " + std::to_string(document.grid.point_count()) + "\n";
   std::map<int, int> by_type;
@@ -322,7 +350,7 @@ std::string Summary(const MeshDocument& document) {
   for (const auto& [type, count] : by_type) {
     text += "elements " + std::to_string(type) + " " + std::to_string(count) + "\n";
   }
-  if (document.gmsh) {
+  {
     for (const GmshPhysicalName& group : document.gmsh->physical_names) {
       const auto cells = GmshGroupCells(document, group.name);
       text += "group " + std::to_string(group.dim) + " " + std::to_string(group.tag) + " " +
@@ -334,8 +362,18 @@ std::string Summary(const MeshDocument& document) {
                                                   : document.grid.cell_data) {
       for (const VtkDataArray& array : attribute.arrays) {
         if (array.name.starts_with("gmsh:")) continue;
+        // Entries: all points / cells, or those the view read from the file listed.
+        std::int64_t entries = array.tuple_count();
+        int step = 0;
+        std::string name = array.name;
+        for (const GmshDataView& view : document.gmsh->data_views) {
+          if (view.on_nodes != on_nodes || view.array_name != array.name) continue;
+          if (!view.listed.empty()) entries = static_cast<std::int64_t>(view.listed.size());
+          step = static_cast<int>(view.integer_tags[0]);
+          name = view.string_tags.front();
+        }
         text += std::string("view ") + (on_nodes ? "NodeData " : "ElementData ") +
-                std::to_string(array.tuple_count()) + " " + array.name + "\n";
+                std::to_string(step) + " " + std::to_string(entries) + " " + name + "\n";
       }
     }
   }
