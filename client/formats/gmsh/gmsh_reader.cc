@@ -162,13 +162,15 @@ class Parser {
 
   // Refuses a declared count that the rest of the input cannot hold at `min_bytes` each, so
   // nothing is reserved for it.
-  absl::Status CheckCount(std::int64_t count, std::int64_t min_bytes, absl::string_view what) {
+  // `where`: the count's place, by default the last value read.
+  absl::Status CheckCount(std::int64_t count, std::int64_t min_bytes, absl::string_view what,
+                          std::optional<std::string> where = std::nullopt) {
     const auto remaining = static_cast<std::int64_t>(cursor_.remaining());
-    if (count < 0) return Error(cursor_.Where(), absl::StrCat("negative ", what, " count ", count));
+    if (!where) where = cursor_.Where();
+    if (count < 0) return Error(*where, absl::StrCat("negative ", what, " count ", count));
     if (count > remaining / min_bytes) {
-      return Error(cursor_.Where(),
-                   absl::StrCat("declares ", count, " ", what, ", more than the remaining ",
-                                remaining, " bytes can hold"));
+      return Error(*where, absl::StrCat("declares ", count, " ", what, ", but the ", remaining,
+                                        " bytes left in the file cannot hold them"));
     }
     return absl::OkStatus();
   }
@@ -290,6 +292,7 @@ class Parser {
                                                    name.substr(3), "'"));
       }
       section_ = std::string(name);
+      section_where_ = cursor_.Where();
       extras().section_order.push_back(section_);
       absl::Status status;
       if (name == "MeshFormat") {
@@ -324,7 +327,7 @@ class Parser {
   // ---- $PhysicalNames: text in both encodings ----
 
   absl::Status ParsePhysicalNames() {
-    if (seen_physical_names_) return Error(cursor_.Where(), "a second $PhysicalNames section");
+    if (seen_physical_names_) return Error(section_where_, "a second $PhysicalNames section");
     seen_physical_names_ = true;
     absl::StatusOr<std::int64_t> count = LineInt([] { return "the number of physical names"; });
     if (!count.ok()) return count.status();
@@ -375,7 +378,7 @@ class Parser {
   }
 
   absl::Status ParseEntities() {
-    if (extras().has_entities) return Error(cursor_.Where(), "a second $Entities section");
+    if (extras().has_entities) return Error(section_where_, "a second $Entities section");
     extras().has_entities = true;
     static constexpr absl::string_view kKinds[] = {"points", "curves", "surfaces", "volumes"};
     std::int64_t counts[4];
@@ -437,7 +440,7 @@ class Parser {
   // ---- $Nodes ----
 
   absl::Status BeginNodes(std::int64_t count) {
-    if (seen_nodes_) return Error(cursor_.Where(), "a second $Nodes section");
+    if (seen_nodes_) return Error(section_where_, "a second $Nodes section");
     seen_nodes_ = true;
     extras().node_tags.reserve(count);
     document_.grid.points.reals.reserve(3 * count);
@@ -500,6 +503,7 @@ class Parser {
 
   absl::Status ParseNodes41() {
     std::int64_t header[4];
+    std::string where[4];
     static constexpr absl::string_view kHeader[] = {"the number of entity blocks",
                                                     "the number of nodes", "the minimum node tag",
                                                     "the maximum node tag"};
@@ -507,12 +511,15 @@ class Parser {
       absl::StatusOr<std::int64_t> value = Size([&] { return std::string(kHeader[k]); });
       if (!value.ok()) return value.status();
       header[k] = *value;
+      where[k] = cursor_.Where();
     }
     const std::int64_t blocks = header[0];
     const std::int64_t count = header[1];
-    if (absl::Status status = CheckCount(blocks, 8, "node blocks"); !status.ok()) return status;
+    if (absl::Status status = CheckCount(blocks, 8, "node blocks", where[0]); !status.ok()) {
+      return status;
+    }
     if (absl::Status status = CheckCount(count, cursor_.binary() ? 24 + cursor_.size_t_size() : 8,
-                                         "nodes");
+                                         "nodes", where[1]);
         !status.ok()) {
       return status;
     }
@@ -581,10 +588,10 @@ class Parser {
   // ---- $Elements ----
 
   absl::Status BeginElements(std::int64_t count) {
-    if (seen_elements_) return Error(cursor_.Where(), "a second $Elements section");
+    if (seen_elements_) return Error(section_where_, "a second $Elements section");
     seen_elements_ = true;
     if (!seen_nodes_) {
-      return Error(cursor_.Where(), "$Elements comes before $Nodes; elements refer to node tags");
+      return Error(section_where_, "$Elements comes before $Nodes; elements refer to node tags");
     }
     VtkCells& cells = document_.grid.cells;
     cells.types.reserve(count);
@@ -745,6 +752,7 @@ class Parser {
 
   absl::Status ParseElements41() {
     std::int64_t header[4];
+    std::string where[4];
     static constexpr absl::string_view kHeader[] = {
         "the number of entity blocks", "the number of elements", "the minimum element tag",
         "the maximum element tag"};
@@ -752,12 +760,15 @@ class Parser {
       absl::StatusOr<std::int64_t> value = Size([&] { return std::string(kHeader[k]); });
       if (!value.ok()) return value.status();
       header[k] = *value;
+      where[k] = cursor_.Where();
     }
     const std::int64_t blocks = header[0];
     const std::int64_t count = header[1];
-    if (absl::Status status = CheckCount(blocks, 8, "element blocks"); !status.ok()) return status;
+    if (absl::Status status = CheckCount(blocks, 8, "element blocks", where[0]); !status.ok()) {
+      return status;
+    }
     if (absl::Status status = CheckCount(count, cursor_.binary() ? 2 * cursor_.size_t_size() : 4,
-                                         "elements");
+                                         "elements", where[1]);
         !status.ok()) {
       return status;
     }
@@ -826,8 +837,8 @@ class Parser {
   absl::Status ParseDataView(bool on_nodes) {
     const absl::string_view targets = on_nodes ? "$Nodes" : "$Elements";
     if (!(on_nodes ? seen_nodes_ : seen_elements_)) {
-      return Error(cursor_.Where(), absl::StrCat("comes before ", targets,
-                                                 ", whose tags its entries refer to"));
+      return Error(section_where_, absl::StrCat("comes before ", targets,
+                                                ", whose tags its entries refer to"));
     }
     GmshDataView view;
     view.on_nodes = on_nodes;
@@ -987,6 +998,7 @@ class Parser {
   GmshCursor cursor_;
   MeshDocument document_;
   std::string section_;
+  std::string section_where_;  // the current section's header line
   int version_major_ = 4;
   bool seen_physical_names_ = false;
   bool seen_nodes_ = false;
