@@ -73,7 +73,8 @@ std::optional<absl::string_view> GmshCursor::Take(std::size_t count) {
 std::optional<std::int32_t> GmshCursor::TakeInt32() {
   const std::optional<absl::string_view> bytes = Take(4);
   if (!bytes) return std::nullopt;
-  return std::bit_cast<std::int32_t>(static_cast<std::uint32_t>(Decode(bytes->data(), 4, big_endian_)));
+  return std::bit_cast<std::int32_t>(
+      static_cast<std::uint32_t>(Decode(bytes->data(), 4, big_endian_)));
 }
 
 std::optional<std::uint64_t> GmshCursor::TakeSize() {

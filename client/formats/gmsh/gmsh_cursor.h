@@ -48,6 +48,7 @@ class GmshCursor {
   // Where the cursor is now (for "the file ends …").
   std::string Here() const;
   std::size_t remaining() const { return bytes_.size() - pos_; }
+  std::size_t size() const { return bytes_.size(); }
 
  private:
   void Mark() {

@@ -87,9 +87,9 @@ struct GmshExtras {
   bool has_entities = false;
   std::vector<GmshEntity> entities;  // file order: points, curves, surfaces, volumes
 
-  std::vector<std::int64_t> node_tags;     // point index → node tag
-  std::vector<GmshNodeBlock> node_blocks;  // 4.1 only
-  std::vector<std::int64_t> element_tags;  // cell index → element tag
+  std::vector<std::int64_t> node_tags;       // point index → node tag
+  std::vector<GmshNodeBlock> node_blocks;    // 4.1 only
+  std::vector<std::int64_t> element_tags;    // cell index → element tag
   std::vector<GmshDimTag> element_entities;  // 4.1 only: cell index → its block's entity
   GmshTagLists element_tag_lists;            // 2.2 only
 

@@ -57,7 +57,9 @@ absl::StatusOr<std::vector<std::int64_t>> GmshGroupCells(const MeshDocument& doc
                                                          absl::string_view group) {
   // Every group there is, with its name if it has one, sorted by (dim, tag).
   std::map<DimTag, std::string> groups;
-  ForEachMembership(document, [&](std::int64_t, int dim, int tag) { groups.try_emplace({dim, tag}); });
+  ForEachMembership(document, [&](std::int64_t, int dim, int tag) {
+    groups.try_emplace({dim, tag});
+  });
   if (document.gmsh) {
     for (const GmshPhysicalName& name : document.gmsh->physical_names) {
       groups[{name.dim, name.tag}] = name.name;
@@ -89,7 +91,8 @@ absl::StatusOr<std::vector<std::int64_t>> GmshGroupCells(const MeshDocument& doc
     return absl::NotFoundError(
         listed.empty()
             ? absl::StrCat("no physical group '", group, "': the mesh has no physical groups")
-            : absl::StrCat("no physical group '", group, "' (a name, a tag or DIM:TAG); the mesh has ",
+            : absl::StrCat("no physical group '", group,
+                           "' (a name, a tag or DIM:TAG); the mesh has ",
                            absl::StrJoin(listed, ", ")));
   }
 

@@ -80,9 +80,8 @@ void DeriveEntities(const VtkFile& grid, const std::vector<int>& cell_dims, Gmsh
   // Entities ordered by dimension, as $Entities lists them.
   std::vector<int> order(keys.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return std::get<0>(keys[a]) < std::get<0>(keys[b]);
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return std::get<0>(keys[a]) < std::get<0>(keys[b]); });
   std::vector<int> entity_of_key(keys.size());
   for (int key : order) {
     GmshEntity entity;
@@ -141,12 +140,57 @@ void WarnMultiplePhysical(const GmshExtras& extras, absl::string_view target) {
   }
 }
 
+// Extras built by hand (not by the reader) must still not make the writer read out of bounds
+// or write a file Gmsh misreads.
+absl::Status CheckExtras(const GmshExtras& extras) {
+  const auto bad = [](absl::string_view what) {
+    return absl::InvalidArgumentError(absl::StrCat("inconsistent Gmsh extras: ", what));
+  };
+  const auto bad_text = [](absl::string_view text) {
+    return text.find_first_of("\"\n\r") != absl::string_view::npos;
+  };
+  for (const GmshPhysicalName& name : extras.physical_names) {
+    if (bad_text(name.name)) return bad(absl::StrCat("physical name '", name.name, "'"));
+  }
+  for (const GmshEntity& entity : extras.entities) {
+    if (entity.dim < 0 || entity.dim > 3) {
+      return bad(absl::StrCat("entity dimension ", entity.dim));
+    }
+  }
+  for (const GmshNodeBlock& block : extras.node_blocks) {
+    if (block.dim < 0 || block.dim > 3 || block.count < 0 ||
+        static_cast<std::int64_t>(block.parametric_coords.size()) !=
+            (block.parametric ? block.count * block.dim : 0)) {
+      return bad(absl::StrCat("node block (", block.dim, ", ", block.tag, ")"));
+    }
+  }
+  const GmshTagLists& lists = extras.element_tag_lists;
+  if (lists.offsets.empty() || lists.offsets.front() != 0 ||
+      lists.offsets.back() != static_cast<std::int64_t>(lists.values.size()) ||
+      !std::is_sorted(lists.offsets.begin(), lists.offsets.end())) {
+    return bad("element tag lists");
+  }
+  for (const GmshDataView& view : extras.data_views) {
+    if (view.integer_tags.size() < 3) return bad(absl::StrCat("view '", view.array_name, "'"));
+    for (const std::string& tag : view.string_tags) {
+      if (bad_text(tag)) return bad(absl::StrCat("view string tag '", tag, "'"));
+    }
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::StatusOr<GmshLayout> BuildGmshLayout(const MeshDocument& document, GmshVersion version) {
   const VtkFile& grid = document.grid;
   const std::int64_t n = grid.point_count();
   const std::int64_t m = grid.cells.size();
+  const VtkCells& cells = grid.cells;
+  if (static_cast<std::int64_t>(cells.offsets.size()) != m + 1 || cells.offsets.front() != 0 ||
+      cells.offsets.back() != static_cast<std::int64_t>(cells.connectivity.size()) ||
+      !std::is_sorted(cells.offsets.begin(), cells.offsets.end())) {
+    return absl::InvalidArgumentError("the cells' offsets do not match their types and nodes");
+  }
   std::vector<int> cell_dims(m);
   for (std::int64_t c = 0; c < m; ++c) {
     const std::optional<GmshElementTypeInfo> info = GmshElementTypeOfVtk(grid.cells.types[c]);
@@ -168,6 +212,9 @@ absl::StatusOr<GmshLayout> BuildGmshLayout(const MeshDocument& document, GmshVer
 
   GmshLayout layout;
   const GmshExtras* extras = document.gmsh ? &*document.gmsh : nullptr;
+  if (extras != nullptr) {
+    if (absl::Status status = CheckExtras(*extras); !status.ok()) return status;
+  }
   layout.keeps_tags = extras != nullptr &&
                       static_cast<std::int64_t>(extras->node_tags.size()) == n &&
                       static_cast<std::int64_t>(extras->element_tags.size()) == m;
@@ -218,7 +265,7 @@ absl::StatusOr<GmshLayout> BuildGmshLayout(const MeshDocument& document, GmshVer
             "Gmsh: element tags beyond the physical and elementary ones (MSH 2.2 partitions, first "
             "on element {}) are not carried over",
             extras->element_tags.size() > static_cast<std::size_t>(c) ? extras->element_tags[c]
-                                                                       : c + 1);
+                                                                      : c + 1);
         break;
       }
     }

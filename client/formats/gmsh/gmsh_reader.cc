@@ -55,7 +55,9 @@ VtkAttribute MakeAttribute(VtkDataArray array) {
   if (array.components == 3) kind = VtkAttributeKind::kVectors;
   if (array.components == 9) kind = VtkAttributeKind::kTensors;
   std::string name = array.name;
-  return VtkAttribute{kind, std::move(name), kind == VtkAttributeKind::kScalars ? "default" : "",
+  return VtkAttribute{kind,
+                      std::move(name),
+                      kind == VtkAttributeKind::kScalars ? "default" : "",
                       {std::move(array)}};
 }
 
@@ -79,9 +81,8 @@ class Parser {
   bool is41() const { return version_major_ == 4; }
 
   absl::Status Error(const std::string& where, absl::string_view message) const {
-    return absl::InvalidArgumentError(
-        absl::StrCat(where, section_.empty() ? "" : absl::StrCat(" in $", section_), ": ",
-                     message));
+    return absl::InvalidArgumentError(absl::StrCat(
+        where, section_.empty() ? "" : absl::StrCat(" in $", section_), ": ", message));
   }
 
   // ---- Values: ASCII tokens, or binary int32 / size_t / double. `what` builds the value's
@@ -228,8 +229,8 @@ class Parser {
                                                  "; getme reads 2.2 and 4.1"));
     }
     if (file_type != 0 && file_type != 1) {
-      return Error(cursor_.Where(), absl::StrCat("file-type must be 0 (ASCII) or 1 (binary), found ",
-                                                 file_type));
+      return Error(cursor_.Where(),
+                   absl::StrCat("file-type must be 0 (ASCII) or 1 (binary), found ", file_type));
     }
     // 2.2: data-size is sizeof(double); 4.1: sizeof(size_t) of the writing machine.
     if ((version_major_ == 2 && data_size != 8) ||
@@ -258,11 +259,11 @@ class Parser {
       const bool little = byte(0) == 1 && byte(1) == 0 && byte(2) == 0 && byte(3) == 0;
       const bool big = byte(0) == 0 && byte(1) == 0 && byte(2) == 0 && byte(3) == 1;
       if (!little && !big) {
-        return Error(cursor_.Where(),
-                     absl::StrCat("the endianness check must be the integer 1 (bytes 01 00 00 00, "
-                                  "or 00 00 00 01 from a big-endian machine), found bytes ",
-                                  Hex(byte(0)), " ", Hex(byte(1)), " ", Hex(byte(2)), " ",
-                                  Hex(byte(3))));
+        return Error(
+            cursor_.Where(),
+            absl::StrCat("the endianness check must be the integer 1 (bytes 01 00 00 00, "
+                         "or 00 00 00 01 from a big-endian machine), found bytes ",
+                         Hex(byte(0)), " ", Hex(byte(1)), " ", Hex(byte(2)), " ", Hex(byte(3))));
       }
       extras().big_endian = big;
       cursor_.SetBinary(big, static_cast<int>(data_size));
@@ -288,8 +289,8 @@ class Parser {
       }
       const absl::string_view name = line->substr(1);
       if (absl::StartsWith(name, "End")) {
-        return Error(cursor_.Where(), absl::StrCat("'", *line, "' without a matching '$",
-                                                   name.substr(3), "'"));
+        return Error(cursor_.Where(),
+                     absl::StrCat("'", *line, "' without a matching '$", name.substr(3), "'"));
       }
       section_ = std::string(name);
       section_where_ = cursor_.Where();
@@ -340,14 +341,14 @@ class Parser {
     for (std::int64_t i = 0; i < *count; ++i) {
       const std::optional<absl::string_view> line = cursor_.ReadNonBlankLine();
       if (!line) {
-        return Error(cursor_.Here(), absl::StrCat("the file ends at physical name ", i + 1, " of ",
-                                                  *count));
+        return Error(cursor_.Here(),
+                     absl::StrCat("the file ends at physical name ", i + 1, " of ", *count));
       }
       // dim tag "name" — the name may hold spaces.
       const std::size_t open = line->find('"');
       const std::size_t close = line->rfind('"');
-      const std::vector<absl::string_view> numbers = absl::StrSplit(
-          line->substr(0, open), absl::ByAnyChar(" \t"), absl::SkipEmpty());
+      const std::vector<absl::string_view> numbers =
+          absl::StrSplit(line->substr(0, open), absl::ByAnyChar(" \t"), absl::SkipEmpty());
       std::optional<std::int64_t> dim;
       std::optional<std::int64_t> tag;
       if (numbers.size() == 2) {
@@ -361,9 +362,9 @@ class Parser {
                      absl::StrCat("physical name ", i + 1, " of ", *count,
                                   ": expected 'dim tag \"name\"' (dim 0-3), found ", Quote(*line)));
       }
-      extras().physical_names.push_back(GmshPhysicalName{
-          static_cast<int>(*dim), static_cast<int>(*tag),
-          std::string(line->substr(open + 1, close - open - 1))});
+      extras().physical_names.push_back(
+          GmshPhysicalName{static_cast<int>(*dim), static_cast<int>(*tag),
+                           std::string(line->substr(open + 1, close - open - 1))});
     }
     return ExpectEnd();
   }
@@ -395,8 +396,7 @@ class Parser {
         entity.dim = dim;
         const auto what = [&](absl::string_view field) {
           return [&, field] {
-            return absl::StrCat(field, " of entity ", i + 1, " of ", counts[dim], " ",
-                                kKinds[dim]);
+            return absl::StrCat(field, " of entity ", i + 1, " of ", counts[dim], " ", kKinds[dim]);
           };
         };
         absl::StatusOr<std::int64_t> tag = Int(what("the tag"));
@@ -405,16 +405,18 @@ class Parser {
         if (!int_tag.ok()) return int_tag.status();
         entity.tag = *int_tag;
         for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) {
-          absl::StatusOr<double> value = Real(what(dim == 0 ? "a coordinate" : "a bounding-box value"));
+          absl::StatusOr<double> value =
+              Real(what(dim == 0 ? "a coordinate" : "a bounding-box value"));
           if (!value.ok()) return value.status();
           (k < 3 ? entity.min[k] : entity.max[k - 3]) = *value;
         }
         if (dim == 0) entity.max = entity.min;
         for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
-          absl::StatusOr<std::int64_t> n =
-              Size(what(list == 0 ? "the number of physical tags" : "the number of boundary entities"));
+          absl::StatusOr<std::int64_t> n = Size(
+              what(list == 0 ? "the number of physical tags" : "the number of boundary entities"));
           if (!n.ok()) return n.status();
-          if (absl::Status status = CheckCount(*n, 2, list == 0 ? "physical tags" : "boundary entities");
+          if (absl::Status status =
+                  CheckCount(*n, 2, list == 0 ? "physical tags" : "boundary entities");
               !status.ok()) {
             return status;
           }
@@ -518,8 +520,8 @@ class Parser {
     if (absl::Status status = CheckCount(blocks, 8, "node blocks", where[0]); !status.ok()) {
       return status;
     }
-    if (absl::Status status = CheckCount(count, cursor_.binary() ? 24 + cursor_.size_t_size() : 8,
-                                         "nodes", where[1]);
+    if (absl::Status status =
+            CheckCount(count, cursor_.binary() ? 24 + cursor_.size_t_size() : 8, "nodes", where[1]);
         !status.ok()) {
       return status;
     }
@@ -534,8 +536,8 @@ class Parser {
       absl::StatusOr<std::int64_t> dim = Int(what("the entity dimension"));
       if (!dim.ok()) return dim.status();
       if (*dim < 0 || *dim > 3) {
-        return Error(cursor_.Where(), absl::StrCat("node block ", b + 1, ": entity dimension ", *dim,
-                                                   " is not 0-3"));
+        return Error(cursor_.Where(), absl::StrCat("node block ", b + 1, ": entity dimension ",
+                                                   *dim, " is not 0-3"));
       }
       absl::StatusOr<std::int64_t> tag = Int(what("the entity tag"));
       if (!tag.ok()) return tag.status();
@@ -544,15 +546,16 @@ class Parser {
       absl::StatusOr<std::int64_t> parametric = Int(what("the parametric flag"));
       if (!parametric.ok()) return parametric.status();
       if (*parametric != 0 && *parametric != 1) {
-        return Error(cursor_.Where(), absl::StrCat("node block ", b + 1, ": parametric must be 0 or 1, found ",
-                                                   *parametric));
+        return Error(
+            cursor_.Where(),
+            absl::StrCat("node block ", b + 1, ": parametric must be 0 or 1, found ", *parametric));
       }
       absl::StatusOr<std::int64_t> n = Size(what("the number of nodes"));
       if (!n.ok()) return n.status();
       if (*n < 0 || *n > count - read) {
         return Error(cursor_.Where(),
-                     absl::StrCat("node block ", b + 1, " declares ", *n, " nodes, but the header's ",
-                                  count, " leave ", count - read));
+                     absl::StrCat("node block ", b + 1, " declares ", *n,
+                                  " nodes, but the header's ", count, " leave ", count - read));
       }
       block.dim = static_cast<int>(*dim);
       block.tag = *int_tag;
@@ -560,9 +563,8 @@ class Parser {
       block.count = *n;
       const int parametric_count = block.parametric ? block.dim : 0;
       for (std::int64_t i = 0; i < *n; ++i) {
-        absl::StatusOr<std::int64_t> node_tag = Size([&] {
-          return absl::StrCat("node tag ", i + 1, " of ", *n, " of node block ", b + 1);
-        });
+        absl::StatusOr<std::int64_t> node_tag = Size(
+            [&] { return absl::StrCat("node tag ", i + 1, " of ", *n, " of node block ", b + 1); });
         if (!node_tag.ok()) return node_tag.status();
         if (absl::Status status = AddNodeTag(*node_tag, read + i, count); !status.ok()) {
           return status;
@@ -607,8 +609,8 @@ class Parser {
     const std::optional<GmshElementTypeInfo> info =
         type >= 0 && type <= 1000 ? GmshElementType(static_cast<int>(type)) : std::nullopt;
     if (!info) {
-      return Error(where, absl::StrCat("element ", element_tag, ": unknown Gmsh element type ",
-                                       type));
+      return Error(where,
+                   absl::StrCat("element ", element_tag, ": unknown Gmsh element type ", type));
     }
     if (info->vtk_code == 0) {
       return Error(where, absl::StrCat("element ", element_tag, ": Gmsh element type ", type, " (",
@@ -625,8 +627,9 @@ class Parser {
     }
     const auto index = static_cast<std::int64_t>(extras().element_tags.size());
     if (!element_index_->Insert(tag, index)) {
-      return Error(cursor_.Where(), absl::StrCat("element tag ", tag, " appears twice (first as element ",
-                                                 element_index_->Find(tag) + 1, " of $Elements)"));
+      return Error(cursor_.Where(),
+                   absl::StrCat("element tag ", tag, " appears twice (first as element ",
+                                element_index_->Find(tag) + 1, " of $Elements)"));
     }
     extras().element_tags.push_back(tag);
     return absl::OkStatus();
@@ -645,8 +648,8 @@ class Parser {
       if (!node_tag.ok()) return node_tag.status();
       nodes[k] = node_index_->Find(*node_tag);
       if (nodes[k] < 0) {
-        return Error(cursor_.Where(), absl::StrCat("element ", element_tag, ": node tag ", *node_tag,
-                                                   " is not in $Nodes"));
+        return Error(cursor_.Where(), absl::StrCat("element ", element_tag, ": node tag ",
+                                                   *node_tag, " is not in $Nodes"));
       }
     }
     VtkCells& cells = document_.grid.cells;
@@ -717,9 +720,8 @@ class Parser {
       }
       const std::string where = cursor_.Where();
       if (header[1] < 1 || header[1] > *count - read) {
-        return Error(where, absl::StrCat("a block header declares ", header[1],
-                                         " elements, but ", *count - read, " of the ", *count,
-                                         " remain"));
+        return Error(where, absl::StrCat("a block header declares ", header[1], " elements, but ",
+                                         *count - read, " of the ", *count, " remain"));
       }
       if (absl::Status status = CheckCount(header[2], 4, "tags"); !status.ok()) return status;
       const std::optional<GmshElementTypeInfo> known =
@@ -777,9 +779,8 @@ class Parser {
     std::int64_t read = 0;
     for (std::int64_t b = 0; b < blocks; ++b) {
       const auto what = [&](absl::string_view field) {
-        return [&, field] {
-          return absl::StrCat(field, " of element block ", b + 1, " of ", blocks);
-        };
+        return
+            [&, field] { return absl::StrCat(field, " of element block ", b + 1, " of ", blocks); };
       };
       absl::StatusOr<std::int64_t> dim = Int(what("the entity dimension"));
       if (!dim.ok()) return dim.status();
@@ -811,12 +812,14 @@ class Parser {
         return info.status();
       }
       const GmshElementTypeInfo info = *known;
-      const std::int64_t min_bytes =
-          cursor_.binary() ? cursor_.size_t_size() * (1 + info.node_count) : 2 * (1 + info.node_count);
+      const std::int64_t min_bytes = cursor_.binary()
+                                         ? cursor_.size_t_size() * (1 + info.node_count)
+                                         : 2 * (1 + info.node_count);
       if (absl::Status status = CheckCount(*n, min_bytes, "elements"); !status.ok()) return status;
       for (std::int64_t i = 0; i < *n; ++i, ++read) {
-        absl::StatusOr<std::int64_t> element_tag = Size(
-            [&] { return absl::StrCat("the tag of element ", i + 1, " of element block ", b + 1); });
+        absl::StatusOr<std::int64_t> element_tag = Size([&] {
+          return absl::StrCat("the tag of element ", i + 1, " of element block ", b + 1);
+        });
         if (!element_tag.ok()) return element_tag.status();
         if (absl::Status status = AddElementTag(*element_tag); !status.ok()) return status;
         if (absl::Status status = ReadElementNodes(*element_tag, info, true); !status.ok()) {
@@ -837,8 +840,8 @@ class Parser {
   absl::Status ParseDataView(bool on_nodes) {
     const absl::string_view targets = on_nodes ? "$Nodes" : "$Elements";
     if (!(on_nodes ? seen_nodes_ : seen_elements_)) {
-      return Error(section_where_, absl::StrCat("comes before ", targets,
-                                                ", whose tags its entries refer to"));
+      return Error(section_where_,
+                   absl::StrCat("comes before ", targets, ", whose tags its entries refer to"));
     }
     GmshDataView view;
     view.on_nodes = on_nodes;
@@ -862,8 +865,8 @@ class Parser {
       for (std::int64_t k = 0; k < *n; ++k) {
         const std::optional<absl::string_view> value = cursor_.ReadNonBlankLine();
         if (!value) {
-          return Error(cursor_.Here(), absl::StrCat("the file ends at ", kLists[list], " tag ",
-                                                    k + 1, " of ", *n));
+          return Error(cursor_.Here(),
+                       absl::StrCat("the file ends at ", kLists[list], " tag ", k + 1, " of ", *n));
         }
         if (list == 0) {
           absl::string_view text = *value;
@@ -874,16 +877,17 @@ class Parser {
         } else if (list == 1) {
           const std::optional<double> real = ParseRealToken(*value);
           if (!real) {
-            return Error(cursor_.Where(), absl::StrCat("real tag ", k + 1, " of ", *n,
-                                                       ": expected a number, found ", Quote(*value)));
+            return Error(cursor_.Where(),
+                         absl::StrCat("real tag ", k + 1, " of ", *n, ": expected a number, found ",
+                                      Quote(*value)));
           }
           view.real_tags.push_back(*real);
         } else {
           const std::optional<std::int64_t> integer = ParseInt(*value);
           if (!integer) {
-            return Error(cursor_.Where(), absl::StrCat("integer tag ", k + 1, " of ", *n,
-                                                       ": expected an integer, found ",
-                                                       Quote(*value)));
+            return Error(cursor_.Where(),
+                         absl::StrCat("integer tag ", k + 1, " of ", *n,
+                                      ": expected an integer, found ", Quote(*value)));
           }
           view.integer_tags.push_back(*integer);
         }
@@ -909,9 +913,16 @@ class Parser {
         !status.ok()) {
       return status;
     }
-    const std::string base_name =
-        view.string_tags.empty() ? std::string(on_nodes ? "node data" : "element data")
-                                 : view.string_tags.front();
+    // The array covers every point / cell whatever the section lists: keep a few listed
+    // entries of many components from asking for far more memory than the input holds.
+    if (targets_count * components > static_cast<std::int64_t>(cursor_.size()) + 1024) {
+      return Error(cursor_.Where(), absl::StrCat(components, " components for each of the ",
+                                                 targets_count, on_nodes ? " nodes" : " elements",
+                                                 " exceed what a file of this size can carry"));
+    }
+    const std::string base_name = view.string_tags.empty()
+                                      ? std::string(on_nodes ? "node data" : "element data")
+                                      : view.string_tags.front();
     VtkDataArray array;
     array.name = UniqueName(base_name, view.integer_tags[0], on_nodes);
     array.type = VtkDataType::kDouble;

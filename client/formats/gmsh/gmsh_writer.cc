@@ -426,6 +426,13 @@ class Writer {
   absl::Status WriteReadView(const GmshDataView& view) {
     const VtkDataArray* array = FindTarget(view.on_nodes, view.array_name);
     if (array == nullptr) return absl::OkStatus();  // removed from the document: not written
+    const std::int64_t count = view.on_nodes ? grid_.point_count() : grid_.cells.size();
+    for (std::int64_t target : view.listed) {
+      if (target < 0 || target >= count) {
+        return absl::InvalidArgumentError(absl::StrCat("inconsistent Gmsh extras: view '",
+                                                       view.array_name, "' lists entry ", target));
+      }
+    }
     written_arrays_.push_back(array);
     ViewPlan plan{view.on_nodes, array, -1, view.array_name, &view};
     return WriteView(plan);
@@ -441,6 +448,11 @@ class Writer {
           if (std::find(written_arrays_.begin(), written_arrays_.end(), &array) !=
               written_arrays_.end()) {
             continue;
+          }
+          if (array.name.find_first_of("\"\n\r") != std::string::npos) {
+            return absl::InvalidArgumentError(
+                absl::StrCat(on_nodes ? "point" : "cell", " data array name '", array.name,
+                             "' has a quote or line break, which a Gmsh string tag cannot hold"));
           }
           if (array.components < 1 || array.value_count() != count * array.components) {
             return absl::InvalidArgumentError(absl::StrCat(
@@ -460,8 +472,8 @@ class Writer {
               on_nodes ? "point" : "cell", array.name, array.components, array.components,
               array.name);
           for (int k = 0; k < array.components; ++k) {
-            if (absl::Status status = WriteView(
-                    ViewPlan{on_nodes, &array, k, absl::StrCat(array.name, "[", k, "]")});
+            if (absl::Status status =
+                    WriteView(ViewPlan{on_nodes, &array, k, absl::StrCat(array.name, "[", k, "]")});
                 !status.ok()) {
               return status;
             }
@@ -478,8 +490,10 @@ class Writer {
     const std::int64_t count = plan.on_nodes ? grid_.point_count() : grid_.cells.size();
     const std::vector<std::int64_t>* listed =
         plan.read != nullptr && !plan.read->listed.empty() ? &plan.read->listed : nullptr;
-    const std::int64_t entries = listed != nullptr ? static_cast<std::int64_t>(listed->size()) : count;
-    const std::vector<std::int64_t>& tags = plan.on_nodes ? layout_.node_tags : layout_.element_tags;
+    const std::int64_t entries =
+        listed != nullptr ? static_cast<std::int64_t>(listed->size()) : count;
+    const std::vector<std::int64_t>& tags =
+        plan.on_nodes ? layout_.node_tags : layout_.element_tags;
     if (out_.binary()) {
       for (std::int64_t i = 0; i < entries; ++i) {
         const std::int64_t tag = tags[listed != nullptr ? (*listed)[i] : i];

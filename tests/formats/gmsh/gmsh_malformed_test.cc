@@ -130,8 +130,9 @@ TEST(GmshMalformed, BadMeshFormat) {
             "found '2.2 0'");
   EXPECT_EQ(ParseError(Replace(kMsh22, "2.2 0 8", "2.2 2 8")),
             "line 2 in $MeshFormat: file-type must be 0 (ASCII) or 1 (binary), found 2");
-  EXPECT_EQ(ParseError(Replace(kMsh22, "2.2 0 8", "2.2 0 4")),
-            "line 2 in $MeshFormat: data-size 4 is not supported; MSH 2.2 needs 8 (sizeof(double))");
+  EXPECT_EQ(
+      ParseError(Replace(kMsh22, "2.2 0 8", "2.2 0 4")),
+      "line 2 in $MeshFormat: data-size 4 is not supported; MSH 2.2 needs 8 (sizeof(double))");
   EXPECT_EQ(ParseError(Replace(kMsh22, "$EndMeshFormat", "$Nodes")),
             "line 3 in $MeshFormat: expected '$EndMeshFormat' after the declared number of "
             "entries, found '$Nodes'");
@@ -141,8 +142,9 @@ TEST(GmshMalformed, BadMeshFormat) {
 
 TEST(GmshMalformed, TruncatedInEachSection) {
   const std::string text = kMsh22;
-  EXPECT_EQ(ParseError(FirstLines(text, 2)), "line 3 in $MeshFormat: the file ends before "
-                                             "'$EndMeshFormat'");
+  EXPECT_EQ(ParseError(FirstLines(text, 2)),
+            "line 3 in $MeshFormat: the file ends before "
+            "'$EndMeshFormat'");
   EXPECT_EQ(ParseError(FirstLines(text, 5)),
             "line 5 in $PhysicalNames: declares 1 physical names, but the 1 bytes left in the "
             "file cannot hold them");
@@ -217,8 +219,8 @@ TEST(GmshMalformed, BadElements) {
   EXPECT_EQ(ParseError(Replace(kMsh41, "2 2 3 4 5\n", "2 2 3 4 6\n")),
             "line 26 in $Elements: element 2: node tag 6 is not in $Nodes");
   // Elements need the nodes first.
-  const std::string swapped = Replace(Replace(kMsh22, "$Nodes\n", "$Skipped\n"), "$EndNodes\n",
-                                      "$EndSkipped\n");
+  const std::string swapped =
+      Replace(Replace(kMsh22, "$Nodes\n", "$Skipped\n"), "$EndNodes\n", "$EndSkipped\n");
   EXPECT_EQ(ParseError(swapped),
             "line 16 in $Elements: $Elements comes before $Nodes; elements refer to node tags");
 }
@@ -235,6 +237,9 @@ TEST(GmshMalformed, BadNodesAndData) {
   EXPECT_EQ(ParseError(Replace(kMsh22, "3\n0\n1\n2\n", "2\n0\n1\n")),
             "line 28 in $NodeData: expected at least 3 integer tags (time step, components, "
             "entries), found 2");
+  EXPECT_EQ(ParseError(Replace(kMsh22, "0\n1\n2\n1 1\n2 1\n", "0\n1000\n0\n")),
+            "line 29 in $NodeData: 1000 components for each of the 5 nodes exceed what a file of "
+            "this size can carry");
   EXPECT_EQ(ParseError(Replace(kMsh22, "$PhysicalNames\n1\n3 1 \"solid\"",
                                "$PhysicalNames\n1\n3 \"solid\"")),
             "line 6 in $PhysicalNames: physical name 1 of 1: expected 'dim tag \"name\"' (dim "
@@ -284,10 +289,11 @@ TEST(GmshMalformedBinary, CountsAndTypesNameSectionAndOffset) {
   const std::size_t nodes = After(bytes, "$Nodes\n");
   const std::uint64_t huge = 1ull << 40;
   std::memcpy(&bytes[nodes + 8], &huge, 8);
-  EXPECT_EQ(ParseError(bytes),
-            "byte " + std::to_string(nodes + 8) + " in $Nodes: declares 1099511627776 nodes, but "
-            "the " + std::to_string(bytes.size() - nodes - 32) +
-                " bytes left in the file cannot hold them");
+  EXPECT_EQ(ParseError(bytes), "byte " + std::to_string(nodes + 8) +
+                                   " in $Nodes: declares 1099511627776 nodes, but "
+                                   "the " +
+                                   std::to_string(bytes.size() - nodes - 32) +
+                                   " bytes left in the file cannot hold them");
   // The first element block's type (after dim and entity tag, 4-byte ints).
   bytes = original;
   const std::size_t block = After(bytes, "$Elements\n") + 32;
@@ -351,8 +357,8 @@ TEST(GmshMalformed, TruncatedAtEveryLine) {
 
 TEST(GmshMalformed, RandomDamageNeverCrashes) {
   std::mt19937 random(5);
-  for (const std::string name :
-       {"hybrid_22_ascii.msh", "hybrid_22_binary.msh", "views_41_ascii.msh", "views_41_binary.msh"}) {
+  for (const std::string name : {"hybrid_22_ascii.msh", "hybrid_22_binary.msh",
+                                 "views_41_ascii.msh", "views_41_binary.msh"}) {
     const std::string original = ReadBytes(GmshInput(name));
     for (int trial = 0; trial < 2000; ++trial) {
       std::string bytes = original;

@@ -87,9 +87,8 @@ void ExpectAsGmshReadsIt(const MeshDocument& document, const GmshExpected& expec
     SCOPED_TRACE("group " + group.name);
     std::vector<std::int64_t> cells;
     for (const auto& element : expected.elements) {
-      if (element.dim == group.dim &&
-          std::find(group.entities.begin(), group.entities.end(), element.entity) !=
-              group.entities.end()) {
+      if (element.dim == group.dim && std::find(group.entities.begin(), group.entities.end(),
+                                                element.entity) != group.entities.end()) {
         cells.push_back(element_index.at(element.tag));
       }
     }

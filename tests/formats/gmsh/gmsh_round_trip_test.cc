@@ -119,15 +119,16 @@ TEST_P(GmshFileRoundTrip, SameVariantKeepsTheContent) {
   // Gmsh's 4.1 binary layout leaves no choice, so its files come back byte for byte. (Its 2.2
   // binary writer gives every element its own block header, where ours heads runs of one type.)
   if (!GetParam().starts_with("meshio") && GetParam().ends_with("41_binary")) {
-    EXPECT_TRUE(*bytes == original) << "written " << bytes->size() << " bytes, read "
-                                    << original.size();
+    EXPECT_TRUE(*bytes == original)
+        << "written " << bytes->size() << " bytes, read " << original.size();
   }
 }
 
 std::vector<std::string> GmshFileStems() {
   std::vector<std::string> stems;
   for (const std::string stem : {"hybrid", "views", "regular", "meshio"}) {
-    for (const GmshVariant& variant : AllGmshVariants()) stems.push_back(stem + "_" + variant.suffix);
+    for (const GmshVariant& variant : AllGmshVariants())
+      stems.push_back(stem + "_" + variant.suffix);
   }
   stems.push_back("multi_41_ascii");
   stems.push_back("multi_41_binary");
@@ -230,8 +231,7 @@ TEST(GmshWithoutExtras, NoTagsGiveOneEntityPerDimension) {
   const absl::StatusOr<MeshDocument> read = WriteAndParse(document, WriteOptions{});
   ASSERT_TRUE(read.ok()) << read.status();
   ASSERT_EQ(read->gmsh->entities.size(), 2u);
-  EXPECT_EQ(read->gmsh->element_entities,
-            (std::vector<GmshDimTag>{{3, 1}, {3, 1}, {2, 1}}));
+  EXPECT_EQ(read->gmsh->element_entities, (std::vector<GmshDimTag>{{3, 1}, {3, 1}, {2, 1}}));
   EXPECT_EQ(GmshGroupCells(*read, "1").status().code(), absl::StatusCode::kNotFound);
 }
 
@@ -255,6 +255,27 @@ TEST(GmshWithoutExtras, CellsMshCannotHoldAreRefused) {
   EXPECT_EQ(bytes.status().message(),
             "cell 3 has VTK type 24 (quadratic_tetra), which the Gmsh writer cannot store; it "
             "writes vertex, line, triangle, quad, tetra, hexahedron, wedge and pyramid cells");
+}
+
+TEST(GmshWithoutExtras, InconsistentModelsAreRefused) {
+  MeshDocument document = FromVtk(TwoTetsAndATriangle());
+  document.grid.cells.connectivity[4] = 9;
+  EXPECT_EQ(SerializeGmsh(document, WriteOptions{}).status().message(),
+            "a cell refers to point 9, but there are 5 points");
+  document = FromVtk(TwoTetsAndATriangle());
+  document.grid.cell_data.push_back(IntScalars("short", {1, 2}));
+  EXPECT_EQ(SerializeGmsh(document, WriteOptions{}).status().message(),
+            "cell data array 'short' holds 2 values, expected 3 × 1");
+  // Extras made by hand are checked before use.
+  absl::StatusOr<MeshDocument> read = WriteAndParse(FromVtk(TwoTetsAndATriangle()), WriteOptions{});
+  ASSERT_TRUE(read.ok()) << read.status();
+  read->gmsh->physical_names.push_back({3, 1, "a \"quoted\" name"});
+  EXPECT_EQ(SerializeGmsh(*read, WriteOptions{}).status().message(),
+            "inconsistent Gmsh extras: physical name 'a \"quoted\" name'");
+  read->gmsh->physical_names.clear();
+  read->gmsh->node_blocks[0].parametric = true;
+  EXPECT_EQ(SerializeGmsh(*read, WriteOptions{}).status().message(),
+            "inconsistent Gmsh extras: node block (3, 1)");
 }
 
 // ---- What cannot be carried over is named ----
@@ -358,8 +379,8 @@ std::string Summary(const MeshDocument& document) {
     }
   }
   for (const bool on_nodes : {true, false}) {
-    for (const VtkAttribute& attribute : on_nodes ? document.grid.point_data
-                                                  : document.grid.cell_data) {
+    for (const VtkAttribute& attribute :
+         on_nodes ? document.grid.point_data : document.grid.cell_data) {
       for (const VtkDataArray& array : attribute.arrays) {
         if (array.name.starts_with("gmsh:")) continue;
         // Entries: all points / cells, or those the view read from the file listed.
@@ -381,7 +402,7 @@ std::string Summary(const MeshDocument& document) {
 }
 
 TEST(GmshOutputs, WriteFilesForGmshToRead) {
-  std::filesystem::create_directories(GMSH_TEST_OUTPUTS);
+  std::filesystem::create_directories(testing::GmshOutputDirectory());
   const absl::StatusOr<VtkFile> vtk =
       ReadVtkFile(std::string(GETME_TEST_DATA) + "/hybrid-example.vtk");
   ASSERT_TRUE(vtk.ok()) << vtk.status();

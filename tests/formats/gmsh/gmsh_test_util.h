@@ -16,9 +16,10 @@ struct GmshVariant {
 };
 std::vector<GmshVariant> AllGmshVariants();
 
-// Files the fixture script writes (make_gmsh_inputs.py) and the directory tests write into for
-// check_gmsh_reads_outputs.py.
+// Files the fixture script writes (make_gmsh_inputs.py), and files for
+// check_gmsh_reads_outputs.py: in $GETME_GMSH_OUTPUTS if set, else in a directory no check reads.
 std::string GmshInput(const std::string& name);
+std::string GmshOutputDirectory();
 std::string GmshOutput(const std::string& name);
 std::string ReadBytes(const std::string& path);
 void WriteBytes(const std::string& path, const std::string& bytes);
@@ -70,7 +71,6 @@ bool SameBits(double a, double b);
 
 // Asserts (gtest) that two documents hold the same grid — points bit for bit, cells, point and
 // cell arrays bit for bit — and, if `with_extras`, the same Gmsh extras.
-void ExpectSameDocument(const MeshDocument& expected, const MeshDocument& actual,
-                        bool with_extras);
+void ExpectSameDocument(const MeshDocument& expected, const MeshDocument& actual, bool with_extras);
 
 }  // namespace getme::formats::testing
