@@ -35,7 +35,9 @@ int IntValue(const VtkDataArray* array, std::int64_t index) {
                                      double{std::numeric_limits<int>::max()}));
 }
 
-void ExpandBox(GmshEntity& entity, const double* point, bool first) {
+void ExpandBox(GmshEntity& entity, const VtkDataArray& points, std::int64_t i, bool first) {
+  const double point[3] = {points.AsDouble(3 * i), points.AsDouble(3 * i + 1),
+                           points.AsDouble(3 * i + 2)};
   for (int k = 0; k < 3; ++k) {
     entity.min[k] = first ? point[k] : std::min(entity.min[k], point[k]);
     entity.max[k] = first ? point[k] : std::max(entity.max[k], point[k]);
@@ -92,7 +94,6 @@ void DeriveEntities(const VtkFile& grid, const std::vector<int>& cell_dims, Gmsh
     layout.entities.push_back(std::move(entity));
   }
   std::vector<bool> boxed(layout.entities.size(), false);
-  const double* points = grid.points.reals.data();
   layout.element_entities.reserve(grid.cells.size());
   physical.reserve(grid.cells.size());
   for (std::int64_t c = 0; c < grid.cells.size(); ++c) {
@@ -101,7 +102,7 @@ void DeriveEntities(const VtkFile& grid, const std::vector<int>& cell_dims, Gmsh
     for (std::int64_t k = 0; k < grid.cells.node_count(c); ++k) {
       // A point entity is its first node.
       if (entity.dim == 0 && boxed[e]) break;
-      ExpandBox(entity, points + 3 * grid.cells.nodes(c)[k], !boxed[e]);
+      ExpandBox(entity, grid.points, grid.cells.nodes(c)[k], !boxed[e]);
       boxed[e] = true;
     }
     layout.element_entities.push_back(GmshDimTag{entity.dim, entity.tag});
@@ -114,7 +115,7 @@ void DeriveEntities(const VtkFile& grid, const std::vector<int>& cell_dims, Gmsh
       GmshEntity volume;
       volume.dim = 3;
       volume.tag = 1;
-      for (std::int64_t i = 0; i < n; ++i) ExpandBox(volume, points + 3 * i, i == 0);
+      for (std::int64_t i = 0; i < n; ++i) ExpandBox(volume, grid.points, i, i == 0);
       layout.entities.push_back(volume);
     }
     const GmshEntity& host = layout.entities.back();
@@ -185,6 +186,15 @@ absl::StatusOr<GmshLayout> BuildGmshLayout(const MeshDocument& document, GmshVer
   const VtkFile& grid = document.grid;
   const std::int64_t n = grid.point_count();
   const std::int64_t m = grid.cells.size();
+  if (grid.points.components != 3 || grid.points.value_count() != 3 * n) {
+    return absl::InvalidArgumentError("the points must have 3 components");
+  }
+  for (std::int64_t id : grid.cells.connectivity) {
+    if (id < 0 || id >= n) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("a cell refers to point ", id, ", but there are ", n, " points"));
+    }
+  }
   const VtkCells& cells = grid.cells;
   if (static_cast<std::int64_t>(cells.offsets.size()) != m + 1 || cells.offsets.front() != 0 ||
       cells.offsets.back() != static_cast<std::int64_t>(cells.connectivity.size()) ||

@@ -162,19 +162,9 @@ class Writer {
   }
 
  private:
-  // ---- Consistency of the model ----
+  // ---- What binary fields can hold (the layout checked the rest of the model) ----
 
   absl::Status Check() {
-    const std::int64_t n = grid_.point_count();
-    if (grid_.points.components != 3 || grid_.points.value_count() != 3 * n) {
-      return absl::InvalidArgumentError("the points must have 3 components");
-    }
-    for (std::int64_t id : grid_.cells.connectivity) {
-      if (id < 0 || id >= n) {
-        return absl::InvalidArgumentError(
-            absl::StrCat("a cell refers to point ", id, ", but there are ", n, " points"));
-      }
-    }
     if (out_.binary() && !v41_) {
       // MSH 2.2 binary tags are ints (4.1's are size_t; views are checked as they are written).
       const auto too_large = [](std::int64_t tag) {
@@ -263,12 +253,7 @@ class Writer {
   }
 
   void WritePoint(std::int64_t i) {
-    const double* point = grid_.points.reals.data() + 3 * i;
-    if (!grid_.points.reals.empty()) {
-      for (int k = 0; k < 3; ++k) out_.Real(point[k]);
-    } else {
-      for (int k = 0; k < 3; ++k) out_.Real(grid_.points.AsDouble(3 * i + k));
-    }
+    for (int k = 0; k < 3; ++k) out_.Real(grid_.points.AsDouble(3 * i + k));
   }
 
   void WriteNodes22() {

@@ -257,6 +257,21 @@ TEST(GmshWithoutExtras, CellsMshCannotHoldAreRefused) {
             "writes vertex, line, triangle, quad, tetra, hexahedron, wedge and pyramid cells");
 }
 
+TEST(GmshWithoutExtras, AsciiNumbersAreShortestRoundTripDecimals) {
+  MeshDocument document = FromVtk(TwoTetsAndATriangle());
+  document.grid.points.reals[0] = 0.1 + 0.2;
+  document.grid.points.reals[1] = 1.0 / 3.0;
+  document.grid.points.reals[2] = 0.1;
+  WriteOptions options;
+  options.gmsh_version = GmshVersion::k22;
+  const absl::StatusOr<std::string> text = SerializeGmsh(document, options);
+  ASSERT_TRUE(text.ok()) << text.status();
+  EXPECT_NE(text->find("\n1 0.30000000000000004 0.3333333333333333 0.1\n2 1 0 0\n"),
+            std::string::npos)
+      << *text;
+  EXPECT_NE(text->find("\n1 4 2 0 1 1 2 3 4\n"), std::string::npos) << *text;
+}
+
 TEST(GmshWithoutExtras, InconsistentModelsAreRefused) {
   MeshDocument document = FromVtk(TwoTetsAndATriangle());
   document.grid.cells.connectivity[4] = 9;
