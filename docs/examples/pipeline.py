@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """gmsh → getme → solver, in Python: mesh the vessel of vessel.geo with gmsh's API, smooth the
 meshio.Mesh on a getme-server with live progress, and hand the smoothed mesh on (here: written as
-.vtu for ParaView and .msh for a solver), with every surface cell, tag and array kept.
+.vtu, for ParaView or a solver that reads VTK XML), with every surface cell, tag and array kept.
 
 Environment: GETME_SERVER (default 127.0.0.1:50051). Needs the getme package on the path
 (pip install ./client/python, or PYTHONPATH=build/python)."""
@@ -38,5 +38,4 @@ print(f"q_min {report.before.q_min:.4f} -> {report.q_min:.4f}, "
 
 # 3. Hand on: the same cells, tags and groups as gmsh wrote, with the smoothed points.
 smoothed.write("vessel-smooth.vtu")
-smoothed.write("vessel-smooth.msh", file_format="gmsh", binary=False)
 print("after:", getme.quality(smoothed, server).histogram)
