@@ -335,10 +335,9 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
     return options;
   }
   if (positionals.size() != 2) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("'getme smooth' needs an input and an output file (IN OUT), got ",
-                     positionals.size(), " file argument", positionals.size() == 1 ? "" : "s",
-                     "; see 'getme smooth --help'"));
+    return absl::InvalidArgumentError(absl::StrCat(
+        "'getme smooth' needs an input and an output file (IN OUT), got ", positionals.size(),
+        " file argument", positionals.size() == 1 ? "" : "s", "; see 'getme smooth --help'"));
   }
   options.input = positionals[0];
   options.output = positionals[1];
@@ -460,18 +459,17 @@ absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std:
   }
   if (options.help) return options;
   if (positionals.size() != 2) {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "'getme report' needs the mesh before and after smoothing (IN OUT), got ",
-        positionals.size(), " file argument", positionals.size() == 1 ? "" : "s",
-        "; see 'getme report --help'"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("'getme report' needs the mesh before and after smoothing (IN OUT), got ",
+                     positionals.size(), " file argument", positionals.size() == 1 ? "" : "s",
+                     "; see 'getme report --help'"));
   }
   options.input = positionals[0];
   options.output = positionals[1];
   return options;
 }
 
-absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(
-    const std::vector<std::string>& args) {
+absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(const std::vector<std::string>& args) {
   ConvertCommandOptions options;
   bool binary = false;
   bool ascii = false;

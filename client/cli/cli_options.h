@@ -36,8 +36,8 @@ struct SmoothCommandOptions {
   int threads = 0;  // 0 = all cores
   std::optional<std::int64_t> max_iterations;
   bool free_boundary = false;
-  bool literal = false;                          // the paper's literal algorithm, safeguards off
-  bool no_untangle = false;                      // refuse invalid input instead of untangling it
+  bool literal = false;      // the paper's literal algorithm, safeguards off
+  bool no_untangle = false;  // refuse invalid input instead of untangling it
   FileOptions files;
   std::vector<std::string> fix_groups;  // --fix-physical: physical groups / refs whose nodes stay
   bool fix_surfaces = false;            // --fix-surfaces: nodes of every surface/line/vertex cell
@@ -79,13 +79,13 @@ struct ReportCommandOptions {
   std::string input;   // the mesh before smoothing
   std::string output;  // the mesh after smoothing
   std::optional<formats::FileFormat> input_format;
-  std::string trace;            // JSON lines of `getme smooth --json` / `--trace`
-  std::string picture_format;   // svg or png; default: from --output's extension, else svg
-  std::string picture;          // the picture file; default OUT's stem + "-report.<format>"
+  std::string trace;           // JSON lines of `getme smooth --json` / `--trace`
+  std::string picture_format;  // svg or png; default: from --output's extension, else svg
+  std::string picture;         // the picture file; default OUT's stem + "-report.<format>"
   int bins = 20;
-  bool by_iteration = false;    // x axis: progress events in order instead of seconds
+  bool by_iteration = false;  // x axis: progress events in order instead of seconds
   std::string title;
-  std::string data;             // --data FILE: the plotted numbers as tab-separated text
+  std::string data;  // --data FILE: the plotted numbers as tab-separated text
 };
 
 // `getme convert IN OUT`: the same mesh in another format (or encoding), nothing smoothed.

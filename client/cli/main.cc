@@ -9,8 +9,8 @@
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
 #include "cli/cli_options.h"
-#include "cli/failure.h"
 #include "cli/convert_command.h"
+#include "cli/failure.h"
 #include "cli/quality_command.h"
 #include "cli/report_command.h"
 #include "cli/smooth_command.h"
@@ -135,8 +135,9 @@ int main(int argc, char** argv) {
 #endif
   }
   return getme::cli::ReportFailure(
-      absl::InvalidArgumentError(absl::StrCat("unknown command '", command,
-                                              "'; expected 'smooth', 'quality', 'report', 'convert' or 'jobs' (see "
-                                              "'getme --help')")),
+      absl::InvalidArgumentError(
+          absl::StrCat("unknown command '", command,
+                       "'; expected 'smooth', 'quality', 'report', 'convert' or 'jobs' (see "
+                       "'getme --help')")),
       json, kExitUsage);
 }

@@ -19,9 +19,9 @@ absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
   } else if (std::optional<formats::FileFormat> format = formats::FormatFromExtension(path)) {
     target.format = *format;
   } else {
-    return absl::InvalidArgumentError(absl::StrCat(
-        "cannot tell the output format from '", path,
-        "': use the extension .vtk, .vtu, .msh or .mesh, or give --format"));
+    return absl::InvalidArgumentError(
+        absl::StrCat("cannot tell the output format from '", path,
+                     "': use the extension .vtk, .vtu, .msh or .mesh, or give --format"));
   }
   target.options = formats::DefaultWriteOptions(input, target.format);
   if (files.output_format.has_value() && files.output_format->gmsh_version.has_value()) {
@@ -30,9 +30,9 @@ absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
   if (files.encoding.has_value()) target.options.encoding = *files.encoding;
   if (files.compress) {
     if (target.format != formats::FileFormat::kVtkXml) {
-      return absl::InvalidArgumentError(absl::StrCat(
-          "--compress applies to .vtu output only; '", path, "' is written as ",
-          formats::FormatDisplayName(target.format)));
+      return absl::InvalidArgumentError(absl::StrCat("--compress applies to .vtu output only; '",
+                                                     path, "' is written as ",
+                                                     formats::FormatDisplayName(target.format)));
     }
     target.options.vtu_compress = true;
   }
@@ -64,8 +64,7 @@ absl::Status WriteOutputMesh(const formats::MeshDocument& document, const Output
         target.options.vtu_layout == formats::VtuLayout::kAppended ? "appended" : "inline",
         target.options.vtu_compress ? ", zlib" : "");
   }
-  spdlog::info("wrote {} ({} {})", target.path, formats::FormatDisplayName(target.format),
-               variant);
+  spdlog::info("wrote {} ({} {})", target.path, formats::FormatDisplayName(target.format), variant);
   return absl::OkStatus();
 }
 

@@ -6,8 +6,8 @@
 #include "cli/failure.h"
 #include "cli/json_events.h"
 #include "cli/text_reports.h"
-#include "formats/vtk_mesh.h"
 #include "formats/mesh_file.h"
+#include "formats/vtk_mesh.h"
 #include "getme/mesh_quality.h"
 #include "getme/thread_pool.h"
 

@@ -103,9 +103,8 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     }
     return ReportRemoteFailure(result.status(), options.json, kExitFailure);
   }
-  const SmoothReport report =
-      MakeRemoteSmoothReport(options.input, options.output, options.method, run->document.grid,
-                             *sent, result->result);
+  const SmoothReport report = MakeRemoteSmoothReport(options.input, options.output, options.method,
+                                                     run->document.grid, *sent, result->result);
   if (absl::Status status =
           WriteSmoothedFile(remote::CoordinatesOf(result->mesh), *run->output, run->document);
       !status.ok()) {

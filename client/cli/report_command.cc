@@ -59,8 +59,8 @@ class TemporaryDirectory {
  public:
   static absl::StatusOr<TemporaryDirectory> Create() {
     const char* base = std::getenv("TMPDIR");
-    std::string pattern = absl::StrCat(base != nullptr && *base != '\0' ? base : "/tmp",
-                                       "/getme-report-XXXXXX");
+    std::string pattern =
+        absl::StrCat(base != nullptr && *base != '\0' ? base : "/tmp", "/getme-report-XXXXXX");
     if (mkdtemp(pattern.data()) == nullptr) {
       const int error = errno;
       return absl::ErrnoToStatus(error, "cannot create a temporary directory for gnuplot");
@@ -111,9 +111,9 @@ absl::Status RunGnuplot(const std::string& script, const std::string& log) {
   }
   if (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0) return absl::OkStatus();
   absl::StatusOr<std::string> messages = formats::ReadFileBytes(log);
-  return absl::InternalError(absl::StrCat(
-      "gnuplot failed: ",
-      messages.ok() ? absl::StripAsciiWhitespace(*messages) : absl::string_view("no output")));
+  return absl::InternalError(
+      absl::StrCat("gnuplot failed: ", messages.ok() ? absl::StripAsciiWhitespace(*messages)
+                                                     : absl::string_view("no output")));
 }
 
 }  // namespace
@@ -136,10 +136,9 @@ int RunReportCommand(const ReportCommandOptions& options) {
       EvaluateFile(options.output, options.input_format, options.bins);
   if (!after.ok()) return fail(after.status());
   if (before->elements != after->elements) {
-    return fail(absl::InvalidArgumentError(
-        absl::StrCat(options.input, " has ", before->elements, " volume elements but ",
-                     options.output, " has ", after->elements,
-                     ": not the same mesh before and after smoothing")));
+    return fail(absl::InvalidArgumentError(absl::StrCat(
+        options.input, " has ", before->elements, " volume elements but ", options.output, " has ",
+        after->elements, ": not the same mesh before and after smoothing")));
   }
 
   ReportData data;
@@ -158,8 +157,9 @@ int RunReportCommand(const ReportCommandOptions& options) {
     if (!trace.ok()) return fail(trace.status());
     if (trace->empty()) {
       return fail(absl::InvalidArgumentError(
-          absl::StrCat(options.trace, ": no progress events (record one with 'getme smooth "
-                                      "--trace FILE')")));
+          absl::StrCat(options.trace,
+                       ": no progress events (record one with 'getme smooth "
+                       "--trace FILE')")));
     }
     data.trace = *std::move(trace);
   }
@@ -177,8 +177,7 @@ int RunReportCommand(const ReportCommandOptions& options) {
   const std::string picture_temporary = directory->path() + "/picture." + format;
   for (const auto& [path, text] :
        {std::pair{data_path, table},
-        std::pair{script_path,
-                  ReportGnuplotScript(data, data_path, format, picture_temporary)}}) {
+        std::pair{script_path, ReportGnuplotScript(data, data_path, format, picture_temporary)}}) {
     if (absl::Status status = formats::WriteFileAtomically(path, text); !status.ok()) {
       return fail(status);
     }

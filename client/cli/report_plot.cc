@@ -16,9 +16,8 @@ double TraceX(const ReportData& data, std::size_t index) {
 
 // A string for a gnuplot double-quoted literal.
 std::string Quoted(const std::string& text) {
-  return absl::StrCat("\"",
-                      absl::StrReplaceAll(text, {{"\\", "\\\\"}, {"\"", "\\\""}, {"\n", " "}}),
-                      "\"");
+  return absl::StrCat(
+      "\"", absl::StrReplaceAll(text, {{"\\", "\\\\"}, {"\"", "\\\""}, {"\n", " "}}), "\"");
 }
 
 }  // namespace
@@ -62,20 +61,20 @@ std::string ReportGnuplotScript(const ReportData& data, const std::string& data_
 
   // Figs. 7, 11, 15: elements per mean-ratio interval, before and after.
   const double bin_width = 1.0 / static_cast<double>(data.histogram_before.size());
-  absl::StrAppend(&script, "set title 'Element quality (mean ratio)'\n",
-                  "set xlabel 'mean ratio q'\nset ylabel 'elements'\nset xrange [0:1]\n",
-                  "set yrange [0:*]\nset key top left\nset style fill solid 0.6 border -1\n",
-                  absl::StrFormat("set boxwidth %.6g absolute\n", bin_width * 0.45),
-                  absl::StrFormat(
-                      "plot %s index 0 using (($1+$2)/2-%.6g):3 with boxes lc rgb '#c0504d' "
+  absl::StrAppend(
+      &script, "set title 'Element quality (mean ratio)'\n",
+      "set xlabel 'mean ratio q'\nset ylabel 'elements'\nset xrange [0:1]\n",
+      "set yrange [0:*]\nset key top left\nset style fill solid 0.6 border -1\n",
+      absl::StrFormat("set boxwidth %.6g absolute\n", bin_width * 0.45),
+      absl::StrFormat("plot %s index 0 using (($1+$2)/2-%.6g):3 with boxes lc rgb '#c0504d' "
                       "title %s, \\\n     '' index 0 using (($1+$2)/2+%.6g):4 with boxes lc rgb "
                       "'#4f81bd' title %s\n",
                       Quoted(data_path), bin_width * 0.225,
                       Quoted(absl::StrFormat("before: q_{min} %.4f, q_{mean} %.4f",
                                              data.q_min_before, data.q_mean_before)),
                       bin_width * 0.225,
-                      Quoted(absl::StrFormat("after: q_{min} %.4f, q_{mean} %.4f",
-                                             data.q_min_after, data.q_mean_after))));
+                      Quoted(absl::StrFormat("after: q_{min} %.4f, q_{mean} %.4f", data.q_min_after,
+                                             data.q_mean_after))));
   if (!with_trace) {
     absl::StrAppend(&script, "unset multiplot\n");
     return script;

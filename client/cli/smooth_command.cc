@@ -73,8 +73,8 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   std::int64_t fixed_nodes = 0;
   for (const std::uint8_t fixed : mesh.fixed_flags()) fixed_nodes += fixed != 0 ? 1 : 0;
   spdlog::info("read {} ({}): {} nodes, {} elements, {} passthrough cells, {} fixed nodes",
-               options.input, formats::FormatDisplayName(run->document.format),
-               mesh.node_count(), mesh.element_count(), report.passthrough_cells, fixed_nodes);
+               options.input, formats::FormatDisplayName(run->document.format), mesh.node_count(),
+               mesh.element_count(), report.passthrough_cells, fixed_nodes);
 
   ProgressSink sink(options, run->trace.get());
   const ProgressCallback progress = [&](const ProgressEvent& event) { sink.OnEvent(event); };

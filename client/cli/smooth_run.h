@@ -23,7 +23,7 @@ namespace getme::cli {
 // the options fix, the trace opened.
 struct SmoothRun {
   formats::MeshDocument document;
-  std::optional<OutputTarget> output;  // absent for --detach without OUT
+  std::optional<OutputTarget> output;      // absent for --detach without OUT
   std::vector<std::uint8_t> option_fixed;  // --fix-physical / --fix-surfaces; empty if neither
   std::unique_ptr<TraceFile> trace;
 };

@@ -47,7 +47,8 @@ absl::StatusOr<std::vector<TracePoint>> ReadTrace(const std::string& path) {
     const nlohmann::json event = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
     if (event.is_discarded() || !event.is_object()) {
       return absl::InvalidArgumentError(
-          absl::StrCat(path, ":", number, ": not a JSON object (expected the lines of 'getme "
+          absl::StrCat(path, ":", number,
+                       ": not a JSON object (expected the lines of 'getme "
                        "smooth --trace' or '--json')"));
     }
     const auto kind = event.find("event");

@@ -158,8 +158,9 @@ absl::StatusOr<MeshDocument> ReadMeshDocument(const std::string& path,
                                               std::optional<FileFormat> format) {
   if (!format.has_value() && Lowercase(Extension(path)) == "meshb") {
     return absl::InvalidArgumentError(absl::StrCat(
-        path, ": binary MEDIT (.meshb) is not supported: it needs libMeshb, which Debian does not "
-              "package; convert it to .mesh"));
+        path,
+        ": binary MEDIT (.meshb) is not supported: it needs libMeshb, which Debian does not "
+        "package; convert it to .mesh"));
   }
   absl::StatusOr<std::string> bytes = ReadFileBytes(path);
   if (!bytes.ok()) return bytes.status();
@@ -201,7 +202,8 @@ std::string MeditSolutionPath(const std::string& mesh_path) {
 absl::Status WriteMeshDocument(const std::string& path, const MeshDocument& document,
                                FileFormat format, const WriteOptions& options) {
   const auto with_path = [&](const absl::Status& status) {
-    return absl::Status(status.code(), absl::StrCat("cannot write '", path, "': ", status.message()));
+    return absl::Status(status.code(),
+                        absl::StrCat("cannot write '", path, "': ", status.message()));
   };
   absl::StatusOr<std::string> bytes = SerializeMeshDocument(document, format, options);
   if (!bytes.ok()) return with_path(bytes.status());
@@ -243,9 +245,10 @@ absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& documen
     }
   }
   if (available.empty()) {
-    return absl::NotFoundError(absl::StrCat(
-        "no group '", group, "': this ", FormatDisplayName(document.format),
-        " file has no groups (Gmsh physical groups, or the cell arrays gmsh:physical / medit:ref)"));
+    return absl::NotFoundError(absl::StrCat("no group '", group, "': this ",
+                                            FormatDisplayName(document.format),
+                                            " file has no groups (Gmsh physical groups, or the "
+                                            "cell arrays gmsh:physical / medit:ref)"));
   }
   return absl::NotFoundError(absl::StrCat("no group '", group, "': no cell has ",
                                           absl::StrJoin(available, " or "), " = ", group,
@@ -253,8 +256,8 @@ absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& documen
 }
 
 absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& document,
-                                                          const std::vector<std::string>& groups,
-                                                          bool surface_cells) {
+                                                           const std::vector<std::string>& groups,
+                                                           bool surface_cells) {
   const VtkCells& cells = document.grid.cells;
   std::vector<std::uint8_t> fixed(static_cast<std::size_t>(document.grid.point_count()), 0);
   const auto fix_cell = [&](std::int64_t cell) {

@@ -65,7 +65,7 @@ absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& documen
 // `surface_cells`, of every cell of dimension 0–2 (vertices, lines, triangles, quads: the
 // boundaries and interfaces a mesher marked).
 absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& document,
-                                                          const std::vector<std::string>& groups,
-                                                          bool surface_cells);
+                                                           const std::vector<std::string>& groups,
+                                                           bool surface_cells);
 
 }  // namespace getme::formats

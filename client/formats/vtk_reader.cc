@@ -1,6 +1,5 @@
 #include "formats/vtk_reader.h"
 
-
 #include <cerrno>
 #include <cstring>
 #include <filesystem>

@@ -1,6 +1,5 @@
 #include "formats/vtk_writer.h"
 
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>

@@ -73,7 +73,7 @@ void ExpectSuccess(const RunResult& run) {
 TEST(CliFormats, SameMeshFromEveryFormatSmoothsIdentically) {
   const std::string source = GroupedHybrid("hybrid-groups.msh");
   const std::vector<std::string> common = {"--free-boundary", "--fix-physical", "11",
-                                           "--quiet", "--threads", "2"};
+                                           "--quiet",         "--threads",      "2"};
   const std::string reference_output = TempPath("reference.vtk");
   std::vector<std::string> args = {"smooth", source, reference_output};
   args.insert(args.end(), common.begin(), common.end());
@@ -86,9 +86,12 @@ TEST(CliFormats, SameMeshFromEveryFormatSmoothsIdentically) {
     std::vector<std::string> convert_flags;
   };
   const std::vector<Variant> variants = {
-      {"a.vtk", {"--ascii"}},          {"b.vtk", {"--binary"}},
-      {"a.vtu", {"--ascii"}},          {"b.vtu", {"--binary"}},
-      {"z.vtu", {"--compress"}},       {"a22.msh", {"--format", "msh2", "--ascii"}},
+      {"a.vtk", {"--ascii"}},
+      {"b.vtk", {"--binary"}},
+      {"a.vtu", {"--ascii"}},
+      {"b.vtu", {"--binary"}},
+      {"z.vtu", {"--compress"}},
+      {"a22.msh", {"--format", "msh2", "--ascii"}},
       {"b22.msh", {"--format", "msh2", "--binary"}},
       {"a41.msh", {"--format", "msh4", "--ascii"}},
       {"b41.msh", {"--format", "msh4", "--binary"}},
@@ -119,8 +122,8 @@ TEST(CliFormats, SameMeshFromEveryFormatSmoothsIdentically) {
 TEST(CliFormats, FixPhysicalByNameAndOutputKeepsGroups) {
   const std::string source = GroupedHybrid("hybrid-groups-22.msh");
   const std::string output = TempPath("out.msh");
-  ExpectSuccess(RunGetme({"smooth", source, output, "--free-boundary", "--fix-physical", "inlet",
-                          "--quiet"}));
+  ExpectSuccess(RunGetme(
+      {"smooth", source, output, "--free-boundary", "--fix-physical", "inlet", "--quiet"}));
   const formats::MeshDocument before = Read(source);
   const formats::MeshDocument after = Read(output);
   EXPECT_EQ(after.as_read.gmsh_version, formats::GmshVersion::k22);  // the input's version
@@ -176,8 +179,8 @@ TEST(CliFormats, FixSurfacesHoldsTheMarkedBoundary) {
   const std::string source = GroupedHybrid("hybrid-groups.msh");
   const std::string by_surfaces = TempPath("surfaces.vtu");
   const std::string by_default = TempPath("default.vtu");
-  ExpectSuccess(RunGetme({"smooth", source, by_surfaces, "--free-boundary", "--fix-surfaces",
-                          "--quiet"}));
+  ExpectSuccess(
+      RunGetme({"smooth", source, by_surfaces, "--free-boundary", "--fix-surfaces", "--quiet"}));
   ExpectSuccess(RunGetme({"smooth", source, by_default, "--quiet"}));
   const std::vector<double> a = Coordinates(Read(by_surfaces));
   const std::vector<double> b = Coordinates(Read(by_default));
@@ -187,8 +190,8 @@ TEST(CliFormats, FixSurfacesHoldsTheMarkedBoundary) {
 }
 
 TEST(CliFormats, UnknownGroupNamesTheGroupsThereAre) {
-  const RunResult run = RunGetme({"smooth", GroupedHybrid("hybrid-groups.msh"),
-                                  TempPath("out.msh"), "--fix-physical", "outlet"});
+  const RunResult run = RunGetme({"smooth", GroupedHybrid("hybrid-groups.msh"), TempPath("out.msh"),
+                                  "--fix-physical", "outlet"});
   EXPECT_EQ(run.exit_status, 1);
   EXPECT_NE(run.err.find("outlet"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("inlet"), std::string::npos) << run.err;

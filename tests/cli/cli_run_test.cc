@@ -302,8 +302,7 @@ TEST(CliHelp, HelpTextsExitZero) {
   EXPECT_NE(main_help.out.find("getme smooth IN OUT"), std::string::npos);
   const testing::RunResult smooth_help = RunGetme({"smooth", "--help"});
   EXPECT_EQ(smooth_help.exit_status, 0);
-  EXPECT_NE(smooth_help.out.find("Usage: getme smooth IN OUT [options]"),
-            std::string::npos);
+  EXPECT_NE(smooth_help.out.find("Usage: getme smooth IN OUT [options]"), std::string::npos);
   for (const char* flag : {"--method", "--threads", "--max-iterations", "--free-boundary",
                            "--literal", "--no-untangle", "--binary", "--ascii", "--json"}) {
     EXPECT_NE(smooth_help.out.find(flag), std::string::npos) << flag;
