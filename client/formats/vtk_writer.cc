@@ -9,6 +9,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "formats/file_io.h"
+#include "formats/vtk_array_checks.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_values.h"
 
@@ -35,17 +36,6 @@ std::string EncodeName(absl::string_view name) {
 
 bool IsColorKind(VtkAttributeKind kind) {
   return kind == VtkAttributeKind::kColorScalars || kind == VtkAttributeKind::kLookupTable;
-}
-
-// The type an array is written with: float arrays holding a value that is not exactly a float
-// are promoted to double.
-VtkDataType WrittenType(const VtkDataArray& array) {
-  if (array.type != VtkDataType::kFloat) return array.type;
-  for (const double value : array.reals) {
-    if (std::isnan(value)) continue;
-    if (static_cast<double>(static_cast<float>(value)) != value) return VtkDataType::kDouble;
-  }
-  return VtkDataType::kFloat;
 }
 
 class Writer {
@@ -89,42 +79,14 @@ class Writer {
   }
 
  private:
-  absl::Status CheckArray(const VtkDataArray& array, absl::string_view what) const {
-    if (array.components < 1) {
-      return absl::InvalidArgumentError(
-          absl::StrCat(what, ": the component count is ", array.components, "; expected >= 1"));
-    }
-    const bool integer = IsIntegerType(array.type);
-    if ((integer && !array.reals.empty()) || (!integer && !array.integers.empty())) {
-      return absl::InvalidArgumentError(
-          absl::StrCat(what, ": values are stored in the wrong vector for type ",
-                       DataTypeInfo(array.type).name));
-    }
-    if (array.value_count() % array.components != 0) {
-      return absl::InvalidArgumentError(absl::StrCat(what, ": ", array.value_count(),
-                                                     " values are not a whole number of ",
-                                                     array.components, "-component tuples"));
-    }
-    for (std::size_t i = 0; i < array.integers.size(); ++i) {
-      const bool fits = array.type == VtkDataType::kBit
-                            ? (array.integers[i] == 0 || array.integers[i] == 1)
-                            : IntegerFits(array.integers[i], array.type);
-      if (!fits) {
-        return absl::InvalidArgumentError(absl::StrCat(what, ": value ", i, " (", array.integers[i],
-                                                       ") does not fit type ",
-                                                       DataTypeInfo(array.type).name));
-      }
-    }
-    return absl::OkStatus();
-  }
-
   absl::Status WritePoints() {
     const VtkDataArray& points = file_.points;
     if (points.components != 3 || points.type == VtkDataType::kBit) {
       return absl::InvalidArgumentError("POINTS: expected 3 components of a numeric type");
     }
-    if (absl::Status status = CheckArray(points, "POINTS"); !status.ok()) return status;
-    const VtkDataType type = WrittenType(points);
+    if (absl::Status status = CheckArrayForWriting(points, -1, "POINTS"); !status.ok())
+      return status;
+    const VtkDataType type = TypeKeepingEveryValue(points);
     absl::StrAppend(&out_, "POINTS ", points.tuple_count(), " ", DataTypeInfo(type).name, "\n");
     AppendValues(points, type);
     return absl::OkStatus();
@@ -236,7 +198,7 @@ class Writer {
         if (absl::Status status = CheckAttributeArray(array, tuples, array_what); !status.ok()) {
           return status;
         }
-        const VtkDataType type = WrittenType(array);
+        const VtkDataType type = TypeKeepingEveryValue(array);
         absl::StrAppend(&out_, EncodeName(array.name), " ", array.components, " ",
                         array.tuple_count(), " ", DataTypeInfo(type).name, "\n");
         AppendValues(array, type);
@@ -257,7 +219,7 @@ class Writer {
       return absl::InvalidArgumentError(absl::StrCat(what, ": colours must be stored as reals"));
     }
     const std::string name = EncodeName(array.name);
-    const VtkDataType type = WrittenType(array);
+    const VtkDataType type = TypeKeepingEveryValue(array);
     const absl::string_view type_name = DataTypeInfo(type).name;
     const absl::string_view keyword = AttributeKindKeyword(attribute.kind);
     auto expect_components = [&](int expected) -> absl::Status {
@@ -307,7 +269,7 @@ class Writer {
   absl::Status CheckAttributeArray(const VtkDataArray& array, std::int64_t tuples,
                                    absl::string_view what) const {
     if (array.name.empty()) return absl::InvalidArgumentError(absl::StrCat(what, ": no name"));
-    if (absl::Status status = CheckArray(array, what); !status.ok()) return status;
+    if (absl::Status status = CheckArrayForWriting(array, -1, what); !status.ok()) return status;
     if (tuples >= 0 && array.tuple_count() != tuples) {
       return absl::InvalidArgumentError(
           absl::StrCat(what, ": has ", array.tuple_count(), " tuples; expected ", tuples));

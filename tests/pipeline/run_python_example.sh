@@ -8,18 +8,11 @@ set -euo pipefail
 server_binary="$1" getme="$2" python_path="$3" examples="$4" work="$5"
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 
-"$server_binary" --listen 127.0.0.1:0 > server.log 2>&1 &
-server_pid=$!
-trap 'kill -TERM "$server_pid" 2> /dev/null || true; wait "$server_pid" 2> /dev/null || true' EXIT
-port=""
-for _ in $(seq 100); do
-  port="$(sed -n 's/.*getme-server listening on port \([0-9]*\).*/\1/p' server.log | head -n 1)"
-  [ -n "$port" ] && break
-  sleep 0.1
-done
-[ -n "$port" ] || { echo "getme-server did not start: $(cat server.log)"; exit 1; }
+# shellcheck source=tests/pipeline/start_server.sh
+source "$(dirname "${BASH_SOURCE[0]}")/start_server.sh"
+start_getme_server "$server_binary"
 
-PYTHONPATH="$python_path" GETME_SERVER="127.0.0.1:$port" /usr/bin/python3 "$examples/pipeline.py"
+PYTHONPATH="$python_path" GETME_SERVER="$server_address" /usr/bin/python3 "$examples/pipeline.py"
 
 /usr/bin/python3 - << 'PY'
 import collections

@@ -378,6 +378,28 @@ class Parser {
     return static_cast<int>(value);
   }
 
+  // The entity (dimension, tag) that opens block `b` of `blocks` of a 4.1 $Nodes or $Elements
+  // section; `kind` is "node" or "element".
+  absl::StatusOr<GmshDimTag> BlockEntity(absl::string_view kind, std::int64_t b,
+                                         std::int64_t blocks) {
+    const auto what = [&](absl::string_view field) {
+      return [&, field] {
+        return absl::StrCat(field, " of ", kind, " block ", b + 1, " of ", blocks);
+      };
+    };
+    absl::StatusOr<std::int64_t> dim = Int(what("the entity dimension"));
+    if (!dim.ok()) return dim.status();
+    if (*dim < 0 || *dim > 3) {
+      return Error(cursor_.Where(), absl::StrCat(kind, " block ", b + 1, ": entity dimension ",
+                                                 *dim, " is not 0-3"));
+    }
+    absl::StatusOr<std::int64_t> tag = Int(what("the entity tag"));
+    if (!tag.ok()) return tag.status();
+    absl::StatusOr<int> int_tag = IntTag(*tag, "entity tag");
+    if (!int_tag.ok()) return int_tag.status();
+    return GmshDimTag{static_cast<int>(*dim), *int_tag};
+  }
+
   absl::Status ParseEntities() {
     if (extras().has_entities) return Error(section_where_, "a second $Entities section");
     extras().has_entities = true;
@@ -533,16 +555,8 @@ class Parser {
       const auto what = [&](absl::string_view field) {
         return [&, field] { return absl::StrCat(field, " of node block ", b + 1, " of ", blocks); };
       };
-      absl::StatusOr<std::int64_t> dim = Int(what("the entity dimension"));
-      if (!dim.ok()) return dim.status();
-      if (*dim < 0 || *dim > 3) {
-        return Error(cursor_.Where(), absl::StrCat("node block ", b + 1, ": entity dimension ",
-                                                   *dim, " is not 0-3"));
-      }
-      absl::StatusOr<std::int64_t> tag = Int(what("the entity tag"));
-      if (!tag.ok()) return tag.status();
-      absl::StatusOr<int> int_tag = IntTag(*tag, "entity tag");
-      if (!int_tag.ok()) return int_tag.status();
+      absl::StatusOr<GmshDimTag> entity = BlockEntity("node", b, blocks);
+      if (!entity.ok()) return entity.status();
       absl::StatusOr<std::int64_t> parametric = Int(what("the parametric flag"));
       if (!parametric.ok()) return parametric.status();
       if (*parametric != 0 && *parametric != 1) {
@@ -557,8 +571,8 @@ class Parser {
                      absl::StrCat("node block ", b + 1, " declares ", *n,
                                   " nodes, but the header's ", count, " leave ", count - read));
       }
-      block.dim = static_cast<int>(*dim);
-      block.tag = *int_tag;
+      block.dim = entity->dim;
+      block.tag = entity->tag;
       block.parametric = *parametric == 1;
       block.count = *n;
       const int parametric_count = block.parametric ? block.dim : 0;
@@ -782,16 +796,8 @@ class Parser {
         return
             [&, field] { return absl::StrCat(field, " of element block ", b + 1, " of ", blocks); };
       };
-      absl::StatusOr<std::int64_t> dim = Int(what("the entity dimension"));
-      if (!dim.ok()) return dim.status();
-      if (*dim < 0 || *dim > 3) {
-        return Error(cursor_.Where(), absl::StrCat("element block ", b + 1, ": entity dimension ",
-                                                   *dim, " is not 0-3"));
-      }
-      absl::StatusOr<std::int64_t> tag = Int(what("the entity tag"));
-      if (!tag.ok()) return tag.status();
-      absl::StatusOr<int> int_tag = IntTag(*tag, "entity tag");
-      if (!int_tag.ok()) return int_tag.status();
+      absl::StatusOr<GmshDimTag> entity = BlockEntity("element", b, blocks);
+      if (!entity.ok()) return entity.status();
       absl::StatusOr<std::int64_t> type = Int(what("the element type"));
       if (!type.ok()) return type.status();
       const std::string type_where = cursor_.Where();
@@ -825,7 +831,7 @@ class Parser {
         if (absl::Status status = ReadElementNodes(*element_tag, info, true); !status.ok()) {
           return status;
         }
-        extras().element_entities.push_back(GmshDimTag{static_cast<int>(*dim), *int_tag});
+        extras().element_entities.push_back(*entity);
       }
     }
     if (read != count) {

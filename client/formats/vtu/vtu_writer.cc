@@ -8,6 +8,7 @@
 #include "absl/status/status.h"
 #include "absl/strings/escaping.h"
 #include "absl/strings/str_cat.h"
+#include "formats/vtk_array_checks.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_values.h"
 #include "formats/vtu/vtu_binary.h"
@@ -16,16 +17,9 @@
 namespace getme::formats {
 namespace {
 
-// The type an array is written with: float arrays holding a value that is not exactly a float
-// are promoted to double (as the legacy writer does), then the XML storage type.
+// The XML storage type of an array: float promoted to double as the legacy writer does.
 VtkDataType WrittenType(const VtkDataArray& array) {
-  if (array.type == VtkDataType::kFloat) {
-    for (const double value : array.reals) {
-      if (std::isnan(value)) continue;
-      if (static_cast<double>(static_cast<float>(value)) != value) return VtkDataType::kDouble;
-    }
-  }
-  return vtu::XmlStorageType(array.type);
+  return vtu::XmlStorageType(TypeKeepingEveryValue(array));
 }
 
 // The values of one DataArray: integers or reals. In ASCII, a line per tuple, or per row when
@@ -83,48 +77,14 @@ class Writer {
   }
 
  private:
-  // ---- Checks (as the legacy writer's) ----
-
-  static absl::Status CheckArray(const VtkDataArray& array, std::int64_t tuples,
-                                 absl::string_view what) {
-    if (array.components < 1) {
-      return absl::InvalidArgumentError(
-          absl::StrCat(what, ": the component count is ", array.components, "; expected >= 1"));
-    }
-    const bool integer = IsIntegerType(array.type);
-    if ((integer && !array.reals.empty()) || (!integer && !array.integers.empty())) {
-      return absl::InvalidArgumentError(
-          absl::StrCat(what, ": values are stored in the wrong vector for type ",
-                       DataTypeInfo(array.type).name));
-    }
-    if (array.value_count() % array.components != 0) {
-      return absl::InvalidArgumentError(absl::StrCat(what, ": ", array.value_count(),
-                                                     " values are not a whole number of ",
-                                                     array.components, "-component tuples"));
-    }
-    if (tuples >= 0 && array.tuple_count() != tuples) {
-      return absl::InvalidArgumentError(
-          absl::StrCat(what, ": has ", array.tuple_count(), " tuples; expected ", tuples));
-    }
-    for (std::size_t i = 0; i < array.integers.size(); ++i) {
-      const bool fits = array.type == VtkDataType::kBit
-                            ? (array.integers[i] == 0 || array.integers[i] == 1)
-                            : IntegerFits(array.integers[i], array.type);
-      if (!fits) {
-        return absl::InvalidArgumentError(absl::StrCat(what, ": value ", i, " (", array.integers[i],
-                                                       ") does not fit type ",
-                                                       DataTypeInfo(array.type).name));
-      }
-    }
-    return absl::OkStatus();
-  }
+  // ---- Checks ----
 
   absl::Status CheckPoints() const {
     const VtkDataArray& points = file_.points;
     if (points.components != 3 || points.type == VtkDataType::kBit) {
       return absl::InvalidArgumentError("Points: expected 3 components of a numeric type");
     }
-    return CheckArray(points, -1, "Points");
+    return CheckArrayForWriting(points, -1, "Points");
   }
 
   absl::Status CheckCells() const {
@@ -216,7 +176,7 @@ class Writer {
   absl::Status CheckNamedArray(const VtkDataArray& array, std::int64_t tuples,
                                absl::string_view what) const {
     if (array.name.empty()) return absl::InvalidArgumentError(absl::StrCat(what, ": no name"));
-    return CheckArray(array, tuples, what);
+    return CheckArrayForWriting(array, tuples, what);
   }
 
   absl::Status WriteAttributes(const std::vector<VtkAttribute>& attributes, std::int64_t tuples,
