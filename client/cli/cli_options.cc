@@ -120,7 +120,8 @@ time, each phase marked. Plots with gnuplot (Debian package gnuplot-nox).
 Options:
   --trace FILE          progress events as JSON lines
   -o, --output FILE     the picture (default: OUT without its extension + "-report.svg")
-  --picture-format F    svg or png (default: from --output's extension, else svg)
+  --format F            svg or png (default: from --output's extension, else svg);
+                        also --picture-format
   --bins N              histogram bins (default 20)
   --by-iteration        x axis: progress events in order instead of seconds
   --title TEXT          a title above the plots
@@ -432,18 +433,18 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
 
 absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std::string>& args) {
   ReportCommandOptions options;
+  const auto picture_format = [&](const std::string& value) {
+    if (value != "svg" && value != "png") {
+      return absl::InvalidArgumentError(
+          absl::StrCat("the picture format is svg or png, got '", value, "'"));
+    }
+    options.picture_format = value;
+    return absl::OkStatus();
+  };
   const std::map<std::string, FlagSpec> flags = {
       {"--trace", {true, StringFlag(options.trace)}},
-      {"--picture-format",
-       {true,
-        [&](const std::string& value) {
-          if (value != "svg" && value != "png") {
-            return absl::InvalidArgumentError(
-                absl::StrCat("--picture-format expects svg or png, got '", value, "'"));
-          }
-          options.picture_format = value;
-          return absl::OkStatus();
-        }}},
+      {"--picture-format", {true, picture_format}},
+      {"--format", {true, picture_format}},
       {"--output", {true, StringFlag(options.picture)}},
       {"-o", {true, StringFlag(options.picture)}},
       {"--bins", {true, IntegerFlag<int>("--bins", options.bins, 1, 1000)}},

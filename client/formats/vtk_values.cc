@@ -95,12 +95,6 @@ void AppendReal(std::string& out, double value) {
   out.append(buffer, ec == std::errc() ? ptr : buffer);
 }
 
-void AppendFloat(std::string& out, float value) {
-  char buffer[32];
-  const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  out.append(buffer, ec == std::errc() ? ptr : buffer);
-}
-
 void AppendInteger(std::string& out, std::int64_t value, VtkDataType type) {
   char buffer[24];
   const auto [ptr, ec] = IsUnsigned64(type) ? std::to_chars(buffer, buffer + sizeof(buffer),

@@ -27,8 +27,6 @@ void AppendBigEndianReal(std::string& out, double value, VtkDataType type);
 // The shortest decimal that reads back as exactly `value` (std::to_chars): never longer than
 // %.17g and just as exact, so coordinates round-trip bit for bit.
 void AppendReal(std::string& out, double value);
-// As a float: the shortest decimal that reads back as the same float.
-void AppendFloat(std::string& out, float value);
 void AppendInteger(std::string& out, std::int64_t value, VtkDataType type);
 
 // Whether `value` is inside the range of integer `type` (for the unsigned 64-bit types every

@@ -292,11 +292,9 @@ class Writer {
       return;
     }
     for (std::size_t i = 0; i < array.reals.size(); ++i) {
-      if (type == VtkDataType::kFloat) {
-        AppendFloat(out_, static_cast<float>(array.reals[i]));
-      } else {
-        AppendReal(out_, array.reals[i]);
-      }
+      // A float array's values are exact floats here: printed as doubles, a double reader (ours)
+      // gets the same value back, not the decimal nearest to the float.
+      AppendReal(out_, array.reals[i]);
       out_.push_back((i + 1) % array.components == 0 ? '\n' : ' ');
     }
   }

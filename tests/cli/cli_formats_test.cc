@@ -307,8 +307,8 @@ TEST(CliReport, DrawsHistogramsAndTrace) {
     EXPECT_EQ(std::stod(trace_rows[i][4]), progress[i].Find("q_mean")->number);
   }
 
-  const std::string png = TempPath("report.png");
-  ExpectSuccess(RunGetme({"report", source, output, "-o", png}));
+  const std::string png = TempPath("report.picture");
+  ExpectSuccess(RunGetme({"report", source, output, "-o", png, "--format", "png"}));
   absl::StatusOr<std::string> png_bytes = formats::ReadFileBytes(png);
   ASSERT_TRUE(png_bytes.ok());
   EXPECT_EQ(png_bytes->substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
@@ -316,6 +316,10 @@ TEST(CliReport, DrawsHistogramsAndTrace) {
 
 TEST(CliReport, BadTraceLineIsNamed) {
   const std::string source = GroupedHybrid("hybrid-groups.msh");
+  RunResult usage = RunGetme({"report", source, source, "--format", "pdf"});
+  EXPECT_EQ(usage.exit_status, 2);
+  EXPECT_NE(usage.err.find("the picture format is svg or png, got 'pdf'"), std::string::npos)
+      << usage.err;
   const std::string trace = TempPath("bad.jsonl");
   ASSERT_TRUE(formats::WriteFileAtomically(trace, "{\"event\":\"progress\"}\n").ok());
   RunResult run = RunGetme({"report", source, source, "--trace", trace});

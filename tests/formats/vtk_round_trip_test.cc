@@ -165,6 +165,28 @@ TEST(VtkRoundTrip, CoordinatesSurviveBitForBit) {
   }
 }
 
+// A float array read from BINARY (exact floats) and written as ASCII reads back as the same
+// values: printed as the shortest decimal of the double, not of the float ("0.1" would read
+// back as the double 0.1, not as 0.1f).
+TEST(VtkRoundTrip, ExactFloatsSurviveAscii) {
+  VtkFile file;
+  file.points.type = VtkDataType::kFloat;
+  file.points.components = 3;
+  file.points.reals = {0.1f, 1.0f / 3.0f, 9.49f, 1e-30f, -7.25f, 3.4e38f};
+  file.cells.Add(1, {0});
+  file.cells.Add(1, {1});
+  const std::string ascii = *SerializeVtk(file, VtkEncoding::kAscii);
+  EXPECT_NE(ascii.find("POINTS 2 float\n0.10000000149011612 "), std::string::npos) << ascii;
+  const absl::StatusOr<VtkFile> again = ParseVtk(ascii);
+  ASSERT_TRUE(again.ok()) << again.status();
+  ASSERT_EQ(again->points.reals.size(), file.points.reals.size());
+  for (std::size_t i = 0; i < file.points.reals.size(); ++i) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(again->points.reals[i]),
+              std::bit_cast<std::uint64_t>(file.points.reals[i]))
+        << i;
+  }
+}
+
 // Big-endian helpers for hand-made BINARY files.
 void PutInt32(std::string& out, std::int32_t value) {
   const auto bits = static_cast<std::uint32_t>(value);

@@ -278,9 +278,9 @@ class Writer {
       out_.append(line_start ? "          " : " ");
       if (integer) {
         AppendInteger(out_, values.integers[i], type);
-      } else if (type == VtkDataType::kFloat) {
-        AppendFloat(out_, static_cast<float>(values.reals[i]));
       } else {
+        // Float32 values are exact floats here: printed as doubles, a double reader gets the
+        // same value back, not the decimal nearest to the float.
         AppendReal(out_, values.reals[i]);
       }
       bool line_end = values.row_ends.empty() && (i + 1) % components == 0;
