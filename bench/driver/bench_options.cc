@@ -1,0 +1,157 @@
+#include "bench_options.h"
+
+#include <filesystem>
+
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
+#include "absl/strings/str_replace.h"
+#include "absl/strings/str_split.h"
+
+namespace getme::bench {
+
+const char kBenchUsage[] = R"(Usage: getme-bench [options]
+Smooths each mesh with each method, REPEATS times per thread count, and prints a Markdown table
+of medians (min–max). With --out, writes one JSON file per (mesh, method, threads, mode) with
+every repeat, and the per-iteration trace of the median repeat as JSON lines (`getme report
+--trace` draws it).
+
+Meshes (repeatable, at least one):
+  --mesh PATH             a mesh file (.vtk, .vtu, .msh, .mesh)
+  --generate "KIND ARGS"  a getme-meshgen mesh without OUT, e.g. "hybrid --size 20 --seed 1"
+  --name NAME             the name of the mesh named just before (default: file stem, or the
+                          generator arguments joined by '-')
+Runs:
+  --methods LIST          comma-separated (default smart-laplace,simultaneous,sequential,getme,
+                          warpage)
+  --threads LIST          comma-separated engine thread counts (default 1)
+  --repeats N             runs per measurement; the median is reported (default 3)
+  --free-boundary         boundary nodes may move (nodes marked `fixed` stay)
+  --target-q-mean Q       also report the time until q_mean first reaches Q
+Output:
+  --out DIR               JSON per measurement and traces into DIR (created)
+  --write-meshes          also write DIR/<mesh>.vtk (generated meshes) and
+                          DIR/<mesh>.<method>.t<threads>.vtk (smoothed), for `getme report`
+Service overhead:
+  --service               run each measurement also through a getme-server on loopback
+  --server HOST:PORT      use this running server instead of starting one
+  --server-binary PATH    the getme-server to start (default: beside getme-bench)
+)";
+
+namespace {
+
+absl::StatusOr<std::vector<int>> ParseIntList(const std::string& flag, const std::string& value,
+                                              int min) {
+  std::vector<int> values;
+  for (const absl::string_view part : absl::StrSplit(value, ',')) {
+    int parsed = 0;
+    if (!absl::SimpleAtoi(part, &parsed) || parsed < min) {
+      return absl::InvalidArgumentError(
+          absl::StrCat(flag, ": '", value, "' is not a list of integers >= ", min));
+    }
+    values.push_back(parsed);
+  }
+  return values;
+}
+
+absl::StatusOr<std::vector<Method>> ParseMethodList(const std::string& value) {
+  std::vector<Method> methods;
+  for (const absl::string_view part : absl::StrSplit(value, ',')) {
+    absl::StatusOr<Method> method = ParseMethod(std::string_view(part.data(), part.size()));
+    if (!method.ok())
+      return absl::InvalidArgumentError(absl::StrCat("--methods: ", method.status().message()));
+    methods.push_back(*method);
+  }
+  return methods;
+}
+
+// "hybrid --size 20 --seed 1" → "hybrid-size-20-seed-1": readable and safe as a file name.
+std::string GeneratorName(const std::string& arguments) {
+  std::vector<std::string> words = absl::StrSplit(arguments, ' ', absl::SkipWhitespace());
+  for (std::string& word : words) {
+    while (word.starts_with("-")) word.erase(0, 1);
+    word = absl::StrReplaceAll(word, {{"/", "_"}, {",", "x"}});
+  }
+  return absl::StrJoin(words, "-");
+}
+
+}  // namespace
+
+absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& args) {
+  BenchOptions options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    if (flag == "--help" || flag == "-h") {
+      options.help = true;
+      return options;
+    }
+    if (flag == "--free-boundary") {
+      options.free_boundary = true;
+      continue;
+    }
+    if (flag == "--write-meshes") {
+      options.write_meshes = true;
+      continue;
+    }
+    if (flag == "--service") {
+      options.service = true;
+      continue;
+    }
+    if (!flag.starts_with("--")) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("unexpected argument '", flag, "'; meshes are given with --mesh PATH"));
+    }
+    if (i + 1 == args.size())
+      return absl::InvalidArgumentError(absl::StrCat(flag, " needs a value"));
+    const std::string& value = args[++i];
+    if (flag == "--mesh") {
+      options.meshes.push_back(
+          {MeshSpec::Source::kFile, value, std::filesystem::path(value).stem().string()});
+    } else if (flag == "--generate") {
+      options.meshes.push_back({MeshSpec::Source::kGenerator, value, GeneratorName(value)});
+    } else if (flag == "--name") {
+      if (options.meshes.empty()) {
+        return absl::InvalidArgumentError("--name must follow the --mesh or --generate it names");
+      }
+      options.meshes.back().name = value;
+    } else if (flag == "--methods") {
+      absl::StatusOr<std::vector<Method>> methods = ParseMethodList(value);
+      if (!methods.ok()) return methods.status();
+      options.methods = *std::move(methods);
+    } else if (flag == "--threads") {
+      absl::StatusOr<std::vector<int>> threads = ParseIntList(flag, value, 1);
+      if (!threads.ok()) return threads.status();
+      options.thread_counts = *std::move(threads);
+    } else if (flag == "--repeats") {
+      absl::StatusOr<std::vector<int>> repeats = ParseIntList(flag, value, 1);
+      if (!repeats.ok()) return repeats.status();
+      if (repeats->size() != 1) return absl::InvalidArgumentError("--repeats takes one number");
+      options.repeats = repeats->front();
+    } else if (flag == "--target-q-mean") {
+      double target = 0.0;
+      if (!absl::SimpleAtod(value, &target) || !(target >= 0.0 && target <= 1.0)) {
+        return absl::InvalidArgumentError(
+            absl::StrCat("--target-q-mean: '", value, "' is not a number in [0, 1]"));
+      }
+      options.target_q_mean = target;
+    } else if (flag == "--out") {
+      options.out_dir = value;
+    } else if (flag == "--server") {
+      options.server = value;
+      options.service = true;
+    } else if (flag == "--server-binary") {
+      options.server_binary = value;
+    } else {
+      return absl::InvalidArgumentError(absl::StrCat("unknown option ", flag));
+    }
+  }
+  if (options.meshes.empty()) {
+    return absl::InvalidArgumentError("no mesh: give at least one --mesh or --generate");
+  }
+  if (options.write_meshes && options.out_dir.empty()) {
+    return absl::InvalidArgumentError("--write-meshes needs --out DIR");
+  }
+  return options;
+}
+
+}  // namespace getme::bench
