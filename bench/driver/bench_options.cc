@@ -27,6 +27,8 @@ Runs:
   --threads LIST          comma-separated engine thread counts (default 1)
   --repeats N             runs per measurement; the median is reported (default 3)
   --free-boundary         boundary nodes may move (nodes marked `fixed` stay)
+  --literal               the paper's algorithm, safeguards off (as `getme smooth --literal`)
+  --max-iterations N      cap every phase at N iterations (sequential: picks)
   --target-q-mean Q       also report the time until q_mean first reaches Q
 Output:
   --out DIR               JSON per measurement and traces into DIR (created)
@@ -89,6 +91,10 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
       options.free_boundary = true;
       continue;
     }
+    if (flag == "--literal") {
+      options.literal = true;
+      continue;
+    }
     if (flag == "--write-meshes") {
       options.write_meshes = true;
       continue;
@@ -127,6 +133,13 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
       if (!repeats.ok()) return repeats.status();
       if (repeats->size() != 1) return absl::InvalidArgumentError("--repeats takes one number");
       options.repeats = repeats->front();
+    } else if (flag == "--max-iterations") {
+      std::int64_t cap = 0;
+      if (!absl::SimpleAtoi(value, &cap) || cap < 1) {
+        return absl::InvalidArgumentError(
+            absl::StrCat("--max-iterations: '", value, "' is not an integer >= 1"));
+      }
+      options.max_iterations = cap;
     } else if (flag == "--target-q-mean") {
       double target = 0.0;
       if (!absl::SimpleAtod(value, &target) || !(target >= 0.0 && target <= 1.0)) {

@@ -1,5 +1,7 @@
 #include "benchmark_mesh.h"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <chrono>
 #include <span>
@@ -10,6 +12,7 @@
 #include "formats/mesh_file.h"
 #include "formats/vtk_mesh.h"
 #include "getme/meshgen/meshgen_command.h"
+#include "peak_memory.h"
 
 namespace getme::bench {
 namespace {
@@ -57,6 +60,7 @@ void BenchmarkMesh::RestoreInitialCoordinates() {
 }
 
 absl::StatusOr<BenchmarkMesh> LoadBenchmarkMesh(const MeshSpec& spec) {
+  const std::int64_t rss_before = CurrentRssBytes();
   const auto start = std::chrono::steady_clock::now();
   absl::StatusOr<Mesh> mesh = spec.source == MeshSpec::Source::kFile
                                   ? ReadMesh(spec.path_or_arguments)
@@ -70,6 +74,11 @@ absl::StatusOr<BenchmarkMesh> LoadBenchmarkMesh(const MeshSpec& spec) {
   loaded.initial_x = Copy(loaded.mesh.x());
   loaded.initial_y = Copy(loaded.mesh.y());
   loaded.initial_z = Copy(loaded.mesh.z());
+  // The file document or generator draft is gone; without this glibc would keep its pages and
+  // every later RSS figure would include them.
+  malloc_trim(0);
+  loaded.rss_before_load_bytes = rss_before;
+  loaded.rss_after_load_bytes = CurrentRssBytes();
   return loaded;
 }
 

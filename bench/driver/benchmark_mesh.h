@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -15,6 +16,10 @@ struct BenchmarkMesh {
   MeshSpec spec;
   Mesh mesh;
   double load_seconds = 0.0;  // reading or generating, including the topology build
+  // Process RSS before loading and after (the loader's freed memory handed back to the system):
+  // the difference is the mesh as the engine holds it, plus the initial coordinates kept here.
+  std::int64_t rss_before_load_bytes = 0;
+  std::int64_t rss_after_load_bytes = 0;
   std::vector<double> initial_x, initial_y, initial_z;
 
   void RestoreInitialCoordinates();

@@ -15,8 +15,10 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
+#include "absl/strings/str_join.h"
 #include "bench_options.h"
 #include "benchmark_mesh.h"
+#include "cli/cli_options.h"
 #include "formats/vtk_mesh.h"
 #include "formats/vtk_writer.h"
 #include "in_process_run.h"
@@ -33,15 +35,26 @@ namespace {
 
 using RunFunction = std::function<absl::StatusOr<RunMeasurement>(BenchmarkMesh&)>;
 
-Measurement Measure(BenchmarkMesh& mesh, Method method, int threads, RunMode mode, int repeats,
-                    std::optional<double> target_q_mean, const RunFunction& run) {
+std::string SmoothingOptionsText(const BenchOptions& options) {
+  std::vector<std::string> flags;
+  if (options.free_boundary) flags.push_back("--free-boundary");
+  if (options.literal) flags.push_back("--literal");
+  if (options.max_iterations.has_value()) {
+    flags.push_back(absl::StrCat("--max-iterations ", *options.max_iterations));
+  }
+  return absl::StrJoin(flags, " ");
+}
+
+Measurement Measure(BenchmarkMesh& mesh, Method method, int threads, RunMode mode,
+                    const BenchOptions& options, const RunFunction& run) {
   Measurement measurement;
   measurement.mesh = mesh.spec.name;
   measurement.method = method;
   measurement.threads = threads;
   measurement.mode = mode;
-  measurement.target_q_mean = target_q_mean;
-  for (int repeat = 0; repeat < repeats; ++repeat) {
+  measurement.target_q_mean = options.target_q_mean;
+  measurement.smoothing_options = SmoothingOptionsText(options);
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
     absl::StatusOr<RunMeasurement> result = run(mesh);
     if (!result.ok()) {
       measurement.repeats.clear();
@@ -51,6 +64,17 @@ Measurement Measure(BenchmarkMesh& mesh, Method method, int threads, RunMode mod
     measurement.repeats.push_back(*std::move(result));
   }
   return measurement;
+}
+
+// The engine parameters `getme smooth` would use with the same options.
+SmoothingParams ParamsFor(const BenchOptions& options, Method method, int threads) {
+  cli::SmoothCommandOptions smooth;
+  smooth.method = method;
+  smooth.threads = threads;
+  smooth.free_boundary = options.free_boundary;
+  smooth.literal = options.literal;
+  smooth.max_iterations = options.max_iterations;
+  return cli::ToSmoothingParams(smooth);
 }
 
 void PrintProgress(const Measurement& measurement) {
@@ -179,22 +203,19 @@ int Run(const BenchOptions& options) {
   for (BenchmarkMesh& mesh : meshes) {
     for (const Method method : options.methods) {
       for (const int threads : options.thread_counts) {
-        SmoothingParams params;
-        params.method = method;
-        params.threads = threads;
-        params.fix_boundary = !options.free_boundary;
-        record(
-            Measure(
-                mesh, method, threads, RunMode::kInProcess, options.repeats, options.target_q_mean,
-                [&](BenchmarkMesh& m) { return RunInProcess(m, params, options.target_q_mean); }),
-            mesh);
+        const SmoothingParams params = ParamsFor(options, method, threads);
+        record(Measure(mesh, method, threads, RunMode::kInProcess, options,
+                       [&](BenchmarkMesh& m) {
+                         return RunInProcess(m, params, options.target_q_mean);
+                       }),
+               mesh);
 #ifdef GETME_BENCH_WITH_SERVICE
         if (service != nullptr) {
-          record(
-              Measure(
-                  mesh, method, threads, RunMode::kService, options.repeats, options.target_q_mean,
-                  [&](BenchmarkMesh& m) { return service->Run(m, params, options.target_q_mean); }),
-              mesh);
+          record(Measure(mesh, method, threads, RunMode::kService, options,
+                         [&](BenchmarkMesh& m) {
+                           return service->Run(m, params, options.target_q_mean);
+                         }),
+                 mesh);
         }
 #endif
       }

@@ -41,6 +41,9 @@ struct Measurement {
   int threads = 1;
   RunMode mode = RunMode::kInProcess;
   std::optional<double> target_q_mean;
+  // Further `getme smooth` options the runs used ("--free-boundary --max-iterations 50"), so a
+  // run can be repeated with `getme smooth IN OUT --method M --threads T <these>`.
+  std::string smoothing_options;
   std::vector<RunMeasurement> repeats;
   std::string error;  // why a repeat failed (then `repeats` is empty)
 };
