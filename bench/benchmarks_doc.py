@@ -234,7 +234,7 @@ def mesquite_table(measurements, references):
 def micro_table(data):
     files = sorted(glob.glob(os.path.join(data, "micro", "*.json")))
     if not files:
-        return "_Not run: no micro-benchmark executable (build/bin/getme-micro*) was built._"
+        return "_Not run: no micro-benchmark executable (build/bin/getme_micro_bench, bench/micro) was built._"
     standard = {"name", "run_name", "run_type", "repetitions", "repetition_index", "threads",
                 "iterations", "real_time", "cpu_time", "time_unit", "aggregate_name",
                 "family_index", "per_family_instance_index", "aggregate_unit", "label"}
@@ -248,7 +248,7 @@ def micro_table(data):
             counters = ", ".join(f"{k} {v:.4g}" for k, v in b.items()
                                  if k not in standard and isinstance(v, (int, float)))
             out.append(f"| {os.path.basename(path)[:-5]} | {b.get('run_name', b['name'])} | "
-                       f"{b['real_time']:.4g} {b['time_unit']} | {b['cpu_time']:.4g} "
+                       f"{b['real_time']:,.1f} {b['time_unit']} | {b['cpu_time']:,.1f} "
                        f"{b['time_unit']} | {counters} |")
     return "\n".join(out)
 
