@@ -15,6 +15,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True  # no bench/__pycache__ in the source tree
 from run_benchmarks import read_mesquite_reference  # noqa: E402
 
 METHOD_ORDER = ["smart-laplace", "laplace", "simultaneous", "sequential", "getme", "warpage"]

@@ -174,7 +174,8 @@ int Run(const BenchOptions& options) {
               ? absl::StrCat("/tmp/getme-bench-server-", getpid(), ".log")
               : (std::filesystem::path(options.out_dir) / "getme-server.log").string();
       absl::StatusOr<std::unique_ptr<ServerProcess>> started = ServerProcess::Start(
-          options.server_binary.empty() ? DefaultServerBinary() : options.server_binary, log_path);
+          options.server_binary.empty() ? DefaultServerBinary() : options.server_binary, log_path,
+          /*keep_log=*/!options.out_dir.empty());
       if (!started.ok()) return fail(started.status());
       server = *std::move(started);
       target = server->target();

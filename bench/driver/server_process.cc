@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -34,7 +35,8 @@ int PortFromLog(const std::string& log_path) {
 }  // namespace
 
 absl::StatusOr<std::unique_ptr<ServerProcess>> ServerProcess::Start(const std::string& binary,
-                                                                    const std::string& log_path) {
+                                                                    const std::string& log_path,
+                                                                    bool keep_log) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_path.c_str(),
@@ -49,9 +51,11 @@ absl::StatusOr<std::unique_ptr<ServerProcess>> ServerProcess::Start(const std::s
   const int error = posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (error != 0) {
+    if (!keep_log) std::remove(log_path.c_str());  // the child may have created it
     return absl::ErrnoToStatus(error, absl::StrCat("cannot start the server '", binary, "'"));
   }
-  std::unique_ptr<ServerProcess> server(new ServerProcess(pid, 0));
+  // Owned from here on, so every return below stops the server again.
+  std::unique_ptr<ServerProcess> server(new ServerProcess(pid, log_path, keep_log));
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (std::chrono::steady_clock::now() < deadline) {
     if (const int port = PortFromLog(log_path); port != 0) {
@@ -61,20 +65,24 @@ absl::StatusOr<std::unique_ptr<ServerProcess>> ServerProcess::Start(const std::s
     int status = 0;
     if (waitpid(pid, &status, WNOHANG) == pid) {
       server->pid_ = 0;
+      server->keep_log_ = true;  // it says why
       return absl::UnavailableError(
           absl::StrCat("the server '", binary, "' exited at start; see ", log_path));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
+  server->keep_log_ = true;
   return absl::UnavailableError(
       absl::StrCat("the server '", binary, "' logged no port within 30 s; see ", log_path));
 }
 
 ServerProcess::~ServerProcess() {
-  if (pid_ <= 0) return;
-  kill(pid_, SIGTERM);
-  int status = 0;
-  waitpid(pid_, &status, 0);
+  if (pid_ > 0) {
+    kill(pid_, SIGTERM);
+    int status = 0;
+    waitpid(pid_, &status, 0);
+  }
+  if (!keep_log_) std::remove(log_path_.c_str());
 }
 
 }  // namespace getme::bench
