@@ -128,11 +128,13 @@ absl::Status WriteMeasurement(const BenchOptions& options, const Measurement& me
                    MeasurementJson(measurement, mesh, trace_file));
 }
 
+#ifdef GETME_BENCH_WITH_SERVICE
 std::string DefaultServerBinary() {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   return (self.parent_path() / "getme-server").string();
 }
+#endif
 
 int Run(const BenchOptions& options) {
   const auto fail = [](const absl::Status& status) {
