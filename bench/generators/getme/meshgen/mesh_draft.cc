@@ -7,6 +7,15 @@
 
 namespace getme::meshgen {
 
+void MeshDraft::Reserve(std::int64_t nodes, std::int64_t elements, std::int64_t element_nodes) {
+  x_.reserve(nodes);
+  y_.reserve(nodes);
+  z_.reserve(nodes);
+  types_.reserve(elements);
+  offsets_.reserve(elements + 1);
+  nodes_.reserve(element_nodes);
+}
+
 NodeId MeshDraft::AddNode(const Vec3& position) {
   x_.push_back(position.x());
   y_.push_back(position.y());

@@ -17,6 +17,9 @@ namespace getme::meshgen {
 // it into an immutable getme::Mesh through MeshBuilder.
 class MeshDraft {
  public:
+  // Sizes the storage up front: large generators would otherwise hold up to twice their arrays
+  // while a vector grows.
+  void Reserve(std::int64_t nodes, std::int64_t elements, std::int64_t element_nodes);
   NodeId AddNode(const Vec3& position);
   ElementId AddElement(ElementType type, std::span<const NodeId> nodes);
   ElementId AddElement(ElementType type, std::initializer_list<NodeId> nodes) {
