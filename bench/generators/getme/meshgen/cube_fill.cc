@@ -183,7 +183,7 @@ absl::StatusOr<Mesh> MeshCubeFill(const CubeFillGrid& grid, double distortion, s
   max_move.reserve(counts.nodes);
   LayerMesher(grid, distortion, draft, max_move).Run();
   JitterNodes(draft, max_move, seed);
-  return draft.Build();
+  return std::move(draft).Build();
 }
 
 }  // namespace getme::meshgen

@@ -97,7 +97,7 @@ absl::StatusOr<Mesh> HybridBlock(int nx, int ny, int nz, double distortion, std:
   std::vector<double> moves = grid.InteriorMoves(draft, distortion);
   std::fill(moves.begin() + grid.node_count(), moves.end(), 0.5 * distortion);
   JitterNodes(draft, moves, seed);
-  return draft.Build();
+  return std::move(draft).Build();
 }
 
 }  // namespace getme::meshgen

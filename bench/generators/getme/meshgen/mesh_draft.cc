@@ -61,16 +61,22 @@ CompressedRows MeshDraft::NodeElements() const {
   return rows;
 }
 
-absl::StatusOr<Mesh> MeshDraft::Build() const {
+absl::StatusOr<Mesh> MeshDraft::Build() && {
   MeshBuilder builder;
   builder.Reserve(node_count(), element_count());
   for (std::size_t i = 0; i < x_.size(); ++i) builder.AddNode(x_[i], y_[i], z_[i]);
+  std::vector<double>().swap(x_);
+  std::vector<double>().swap(y_);
+  std::vector<double>().swap(z_);
   std::vector<std::int64_t> element(kMaxElementNodes);
   for (ElementId e = 0; e < static_cast<ElementId>(types_.size()); ++e) {
     const std::span<const NodeId> ids = element_nodes(e);
     element.assign(ids.begin(), ids.end());
     builder.AddElement(types_[e], element);
   }
+  std::vector<ElementType>().swap(types_);
+  std::vector<NodeId>().swap(nodes_);
+  std::vector<std::int64_t>{0}.swap(offsets_);
   return std::move(builder).Build();
 }
 

@@ -43,8 +43,9 @@ class MeshDraft {
   // Elements containing each node (rows indexed by node id, ascending element ids).
   CompressedRows NodeElements() const;
 
-  // Hands the nodes and elements to MeshBuilder; no node is marked fixed.
-  absl::StatusOr<Mesh> Build() const;
+  // Hands the nodes and elements to MeshBuilder, freeing each array once it is copied so a
+  // 10M-element draft and the builder's copy are not held together; no node is marked fixed.
+  absl::StatusOr<Mesh> Build() &&;
 
  private:
   std::vector<double> x_, y_, z_;

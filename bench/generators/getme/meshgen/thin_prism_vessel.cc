@@ -82,7 +82,7 @@ absl::StatusOr<Mesh> ThinPrismVessel(const ThinPrismVesselOptions& options) {
       !status.ok()) {
     return status;
   }
-  absl::StatusOr<Mesh> mesh = draft.Build();
+  absl::StatusOr<Mesh> mesh = std::move(draft).Build();
   if (!mesh.ok() || !options.fix_outer_wall) return mesh;
   if (options.layers == 0) {
     for (const auto& triangle : vessel->wall_triangles) {
