@@ -80,6 +80,15 @@ TEST(MeshgenCommandTest, PaperKindsTakeAnElementTarget) {
   absl::StatusOr<MeshgenCommand> vessel = Parse({"vessel", "v.vtk", "--elements", "300000"});
   ASSERT_TRUE(vessel.ok()) << vessel.status();
   EXPECT_EQ(vessel->elements, 300000);
+  // A sized vessel defaults to the paper's prism share; a given mesh size wins.
+  EXPECT_EQ(vessel->vessel.mesh_size, kPaperVesselMeshSize);
+  absl::StatusOr<MeshgenCommand> fine =
+      Parse({"vessel", "v.vtk", "--mesh-size", "0.2", "--elements", "300000"});
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  EXPECT_EQ(fine->vessel.mesh_size, 0.2);
+  absl::StatusOr<MeshgenCommand> unsized = Parse({"vessel", "v.vtk"});
+  ASSERT_TRUE(unsized.ok()) << unsized.status();
+  EXPECT_EQ(unsized->vessel.mesh_size, ThinPrismVesselOptions{}.mesh_size);
 }
 
 TEST(MeshgenCommandTest, ElementTargetsAreRejectedForBlocksAndBelowOne) {

@@ -59,7 +59,7 @@ class LayerMesher {
         max_move_(max_move),
         below_(LayerSize()),
         above_(LayerSize()),
-        centres_(std::size_t{static_cast<std::size_t>(grid.nx())} * grid.ny()) {}
+        centres_(static_cast<std::size_t>(grid.nx()) * static_cast<std::size_t>(grid.ny())) {}
 
   void Run() {
     AddGridLayer(0, below_);
@@ -78,6 +78,9 @@ class LayerMesher {
   std::size_t PointIndex(int i, int j) const {
     return static_cast<std::size_t>(i) + static_cast<std::size_t>(grid_.nx() + 1) * j;
   }
+  std::size_t CubeIndex(int i, int j) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(grid_.nx()) * j;
+  }
 
   void AddGridLayer(int k, std::vector<NodeId>& ids) {
     for (int j = 0; j <= grid_.ny(); ++j) {
@@ -94,8 +97,7 @@ class LayerMesher {
     for (int j = 0; j < grid_.ny(); ++j) {
       for (int i = 0; i < grid_.nx(); ++i) {
         if (grid_.at(i, j, k) != CubeFill::kCentredTets) continue;
-        centres_[i + static_cast<std::size_t>(grid_.nx()) * j] =
-            draft_.AddNode(Vec3(i + 0.5, j + 0.5, k + 0.5));
+        centres_[CubeIndex(i, j)] = draft_.AddNode(Vec3(i + 0.5, j + 0.5, k + 0.5));
         max_move_.push_back(0.5 * distortion_);
       }
     }
@@ -115,8 +117,7 @@ class LayerMesher {
         if (fill == CubeFill::kHexahedron) {
           draft_.AddElement(ElementType::kHexahedron, corners);
         } else {
-          AddCentredTetCube(draft_, corners, centres_[i + static_cast<std::size_t>(grid_.nx()) * j],
-                            QuadFaces(grid_, i, j, k));
+          AddCentredTetCube(draft_, corners, centres_[CubeIndex(i, j)], QuadFaces(grid_, i, j, k));
         }
       }
     }

@@ -66,6 +66,7 @@ absl::Status ParseNumber(const std::string& flag, const std::string& value, T& o
 absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> args) {
   std::vector<std::string> positional;
   MeshgenCommand command;
+  bool mesh_size_given = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (!arg.starts_with("--")) {
@@ -99,6 +100,7 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
       status = ParseNumber(arg, value, command.seed);
     } else if (arg == "--mesh-size") {
       status = ParseNumber(arg, value, command.vessel.mesh_size);
+      mesh_size_given = true;
     } else if (arg == "--radius") {
       status = ParseNumber(arg, value, command.vessel.radius);
     } else if (arg == "--length") {
@@ -128,6 +130,9 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
   if (command.elements.has_value() && !sized_kind) {
     return absl::InvalidArgumentError(
         "--elements applies to plate, ring and vessel; size the blocks with --size");
+  }
+  if (command.elements.has_value() && command.kind == MeshKind::kVessel && !mesh_size_given) {
+    command.vessel.mesh_size = kPaperVesselMeshSize;
   }
   return command;
 }
