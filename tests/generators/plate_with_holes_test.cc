@@ -6,7 +6,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "getme/smoother.h"
 #include "mesh_checks.h"
 
 namespace getme::meshgen {
@@ -123,16 +122,6 @@ TEST_F(PlateWithHolesTest, BoundaryNodesLieOnTheBox) {
   }
   const std::int64_t nx = layout_->nx, ny = layout_->ny, nz = layout_->nz;
   EXPECT_EQ(boundary, (nx + 1) * (ny + 1) * (nz + 1) - (nx - 1) * (ny - 1) * (nz - 1));
-}
-
-TEST_F(PlateWithHolesTest, GetmeSmoothingRaisesMinimumAndMeanQuality) {
-  Mesh mesh = *mesh_;
-  SmoothingParams params;
-  params.threads = 2;
-  absl::StatusOr<SmoothingResult> result = Smooth(mesh, params);
-  ASSERT_TRUE(result.ok()) << result.status();
-  EXPECT_GT(result->after.q_min, result->before.q_min + 0.05);
-  EXPECT_GT(result->after.q_mean, result->before.q_mean);
 }
 
 // The type mix stays near the paper's (17 % hexahedra, 7 % pyramids, 77 % tetrahedra) at every

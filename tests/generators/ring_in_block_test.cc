@@ -7,7 +7,6 @@
 #include <numbers>
 #include <numeric>
 
-#include "getme/smoother.h"
 #include "mesh_checks.h"
 
 namespace getme::meshgen {
@@ -135,16 +134,6 @@ TEST_F(RingInBlockTest, DistortionLowersQualityStronglyAndKeepsTheRingSurfaceFix
     if (!mesh_->is_boundary(node)) continue;
     ASSERT_EQ(NodePosition(*mesh_, node), NodePosition(*regular_, node)) << "node " << node;
   }
-}
-
-TEST_F(RingInBlockTest, GetmeSmoothingRaisesMinimumAndMeanQuality) {
-  Mesh mesh = *mesh_;
-  SmoothingParams params;
-  params.threads = 2;
-  absl::StatusOr<SmoothingResult> result = Smooth(mesh, params);
-  ASSERT_TRUE(result.ok()) << result.status();
-  EXPECT_GT(result->after.q_min, result->before.q_min + 0.1);
-  EXPECT_GT(result->after.q_mean, result->before.q_mean + 0.1);
 }
 
 // Hexahedra stay at about the paper's 9 % at every size; pyramids, the band's surface, thin out
