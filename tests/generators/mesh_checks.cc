@@ -64,6 +64,36 @@ double FaceArea(const Mesh& mesh, const std::vector<NodeId>& nodes) {
   return area;
 }
 
+Vec3 ElementCentroid(const Mesh& mesh, ElementId element) {
+  Vec3 sum = Vec3::Zero();
+  const std::span<const NodeId> nodes = mesh.element_nodes(element);
+  for (const NodeId node : nodes) sum += NodePosition(mesh, node);
+  return sum / static_cast<double>(nodes.size());
+}
+
+double EnclosedVolume(const Mesh& mesh) {
+  double volume = 0.0;
+  for (const auto& [key, use] : CensusFaces(mesh)) {
+    if (use.elements.size() != 1) continue;
+    const Vec3 a = NodePosition(mesh, use.nodes[0]);
+    Vec3 face_centre = Vec3::Zero();
+    Vec3 area_normal = Vec3::Zero();
+    double signed_volume = 0.0;
+    for (std::size_t k = 0; k < use.nodes.size(); ++k) {
+      face_centre += NodePosition(mesh, use.nodes[k]) / static_cast<double>(use.nodes.size());
+    }
+    for (std::size_t k = 1; k + 1 < use.nodes.size(); ++k) {
+      const Vec3 b = NodePosition(mesh, use.nodes[k]);
+      const Vec3 c = NodePosition(mesh, use.nodes[k + 1]);
+      area_normal += (b - a).cross(c - a);
+      signed_volume += a.dot(b.cross(c)) / 6.0;
+    }
+    const bool outward = area_normal.dot(face_centre - ElementCentroid(mesh, use.elements[0])) > 0;
+    volume += outward ? signed_volume : -signed_volume;
+  }
+  return volume;
+}
+
 BlockFaceReport CheckBlockFaces(const Mesh& mesh, int nx, int ny, int nz) {
   const std::array<double, 3> extent = {double(nx), double(ny), double(nz)};
   BlockFaceReport report;

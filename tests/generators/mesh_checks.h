@@ -29,6 +29,13 @@ Vec3 NodePosition(const Mesh& mesh, NodeId node);
 // Area of a planar triangle or (as two triangles) quad.
 double FaceArea(const Mesh& mesh, const std::vector<NodeId>& nodes);
 
+// Mean of the element's node positions.
+Vec3 ElementCentroid(const Mesh& mesh, ElementId element);
+// Volume enclosed by the boundary faces (faces of exactly one element), each fanned into
+// triangles from its first node and turned to face away from its element's centroid: the
+// divergence theorem, so it needs no volume formula for distorted elements.
+double EnclosedVolume(const Mesh& mesh);
+
 struct BlockFaceReport {
   std::int64_t shared_faces = 0;          // faces of exactly two elements
   std::int64_t boundary_faces = 0;        // faces of exactly one element

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,60 @@ TEST(MeshgenCommandTest, GeneratesTheRequestedBlock) {
   absl::StatusOr<Mesh> mesh = GenerateMesh(*command);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   EXPECT_EQ(mesh->element_count(ElementType::kTetrahedron), 6 * 2 * 3 * 4);
+}
+
+TEST(MeshgenCommandTest, PaperKindsTakeAnElementTarget) {
+  absl::StatusOr<MeshgenCommand> plate = Parse({"plate", "p.vtk", "--elements", "12000"});
+  ASSERT_TRUE(plate.ok()) << plate.status();
+  EXPECT_EQ(plate->kind, MeshKind::kPlate);
+  EXPECT_EQ(plate->elements, 12000);
+  EXPECT_FALSE(plate->distortion.has_value());
+  absl::StatusOr<MeshgenCommand> ring =
+      Parse({"ring", "r.vtk", "--elements", "20000", "--distortion", "0.1"});
+  ASSERT_TRUE(ring.ok()) << ring.status();
+  EXPECT_EQ(ring->kind, MeshKind::kRing);
+  EXPECT_EQ(ring->distortion, 0.1);
+  absl::StatusOr<MeshgenCommand> vessel = Parse({"vessel", "v.vtk", "--elements", "300000"});
+  ASSERT_TRUE(vessel.ok()) << vessel.status();
+  EXPECT_EQ(vessel->elements, 300000);
+  // A sized vessel defaults to the paper's prism share; a given mesh size wins.
+  EXPECT_EQ(vessel->vessel.mesh_size, kPaperVesselMeshSize);
+  absl::StatusOr<MeshgenCommand> fine =
+      Parse({"vessel", "v.vtk", "--mesh-size", "0.2", "--elements", "300000"});
+  ASSERT_TRUE(fine.ok()) << fine.status();
+  EXPECT_EQ(fine->vessel.mesh_size, 0.2);
+  absl::StatusOr<MeshgenCommand> unsized = Parse({"vessel", "v.vtk"});
+  ASSERT_TRUE(unsized.ok()) << unsized.status();
+  EXPECT_EQ(unsized->vessel.mesh_size, ThinPrismVesselOptions{}.mesh_size);
+}
+
+TEST(MeshgenCommandTest, ElementTargetsAreRejectedForBlocksAndBelowOne) {
+  const auto message = [](std::vector<std::string> args) {
+    return std::string(Parse(std::move(args)).status().message());
+  };
+  EXPECT_NE(message({"hex", "o.vtk", "--elements", "1000"}).find("--size"), std::string::npos);
+  EXPECT_NE(message({"plate", "o.vtk", "--elements", "0"}).find("--elements"), std::string::npos);
+  EXPECT_NE(message({"plate", "o.vtk", "--elements", "many"}).find("--elements"),
+            std::string::npos);
+}
+
+TEST(MeshgenCommandTest, GeneratesPlateAndRingNearTheTargetWithTheGivenDistortion) {
+  for (const char* kind : {"plate", "ring"}) {
+    SCOPED_TRACE(kind);
+    absl::StatusOr<MeshgenCommand> regular =
+        Parse({kind, "o.vtk", "--elements", "12000", "--distortion", "0"});
+    absl::StatusOr<MeshgenCommand> distorted = Parse({kind, "o.vtk", "--elements", "12000"});
+    ASSERT_TRUE(regular.ok() && distorted.ok());
+    absl::StatusOr<Mesh> a = GenerateMesh(*regular);
+    absl::StatusOr<Mesh> b = GenerateMesh(*distorted);
+    ASSERT_TRUE(a.ok()) << a.status();
+    ASSERT_TRUE(b.ok()) << b.status();
+    EXPECT_NEAR(static_cast<double>(a->element_count()), 12000, 1200);
+    EXPECT_EQ(a->element_count(), b->element_count());
+    // Undistorted: every coordinate a multiple of one half (grid points and cube centres).
+    EXPECT_TRUE(std::ranges::all_of(a->x(), [](double x) { return 2 * x == std::round(2 * x); }));
+    EXPECT_FALSE(std::ranges::all_of(b->x(), [](double x) { return 2 * x == std::round(2 * x); }));
+  }
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ absl::StatusOr<Mesh> DistortedHexBlock(int nx, int ny, int nz, double distortion
     }
   }
   JitterNodes(draft, grid.InteriorMoves(draft, distortion), seed);
-  return draft.Build();
+  return std::move(draft).Build();
 }
 
 }  // namespace getme::meshgen

@@ -60,14 +60,33 @@ void GenerateWithGmsh(const ThinPrismVesselOptions& options, RawGmshMesh& raw) {
   gmsh::option::setNumber("Mesh.MeshSizeMax", options.mesh_size);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::model::add("vessel");
+  const double segment_length = SegmentLength(options);
   if (options.bend_angle > 0.0) {
     // A torus section around the z axis: its centreline is an arc of the given length.
     gmsh::model::occ::addTorus(0, 0, 0, options.length / options.bend_angle, options.radius, -1,
                                options.bend_angle);
   } else {
-    gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, options.length, options.radius);
+    gmsh::model::occ::addCylinder(0, 0, 0, 0, 0, segment_length, options.radius);
   }
   gmsh::model::occ::synchronize();
+  if (options.segments > 1) {
+    // Copies of the segment are stacked along z (vessel_segments.h): the top cap's mesh must be
+    // the bottom cap's, moved up by the segment length.
+    gmsh::vectorpair surfaces;
+    gmsh::model::getEntities(surfaces, 2);
+    int bottom = -1, top = -1;
+    for (const auto& [dim, tag] : surfaces) {
+      std::string type;
+      gmsh::model::getType(dim, tag, type);
+      if (type != "Plane") continue;
+      double x, y, z;
+      gmsh::model::occ::getCenterOfMass(dim, tag, x, y, z);
+      (z < 0.5 * segment_length ? bottom : top) = tag;
+    }
+    const std::vector<double> translation = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, segment_length,
+                                             0, 0, 0, 1};
+    gmsh::model::mesh::setPeriodic(2, {top}, {bottom}, translation);
+  }
   gmsh::model::mesh::generate(3);
 
   std::vector<double> parametric;
@@ -118,6 +137,10 @@ std::array<NodeId, 3> SortedTriangle(NodeId a, NodeId b, NodeId c) {
 }
 
 }  // namespace
+
+double SegmentLength(const ThinPrismVesselOptions& options) {
+  return options.length / std::max(1, options.segments);
+}
 
 absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, MeshDraft& draft) {
   RawGmshMesh raw;

@@ -17,7 +17,12 @@ struct TetVessel {
 };
 
 // Meshes the vessel described by `options` (radius, length, bend_angle, mesh_size, seed) with
-// gmsh and appends it to `draft`. Fails with Internal when gmsh reports an error.
+// gmsh and appends it to `draft`. With segments > 1 (straight vessels only) it meshes just the
+// first segment, length / segments long, with identical triangulations of its two end caps, for
+// StackSegments to copy. Fails with Internal when gmsh reports an error.
+// The length of one segment: options.length / options.segments.
+double SegmentLength(const ThinPrismVesselOptions& options);
+
 absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, MeshDraft& draft);
 
 }  // namespace getme::meshgen

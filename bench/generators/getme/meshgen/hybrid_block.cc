@@ -5,27 +5,13 @@
 #include <vector>
 
 #include "absl/strings/str_cat.h"
+#include "getme/meshgen/centred_tet_cube.h"
 #include "getme/meshgen/mesh_draft.h"
 #include "getme/meshgen/node_jitter.h"
 #include "getme/meshgen/structured_grid.h"
 
 namespace getme::meshgen {
 namespace {
-
-// A cube face as CubeCorners indices, counter-clockwise seen from the cube's centre (so it is a
-// valid pyramid base for an apex at the centre), and the step to the cube across it.
-struct CubeFace {
-  std::array<int, 4> corners;
-  std::array<int, 3> step;
-};
-constexpr std::array<CubeFace, 6> kCubeFaces = {{
-    {{0, 1, 2, 3}, {0, 0, -1}},  // bottom
-    {{4, 7, 6, 5}, {0, 0, 1}},   // top
-    {{0, 4, 5, 1}, {0, -1, 0}},  // front (y = j)
-    {{1, 5, 6, 2}, {1, 0, 0}},   // right (x = i + 1)
-    {{2, 6, 7, 3}, {0, 1, 0}},   // back  (y = j + 1)
-    {{3, 7, 4, 0}, {-1, 0, 0}},  // left  (x = i)
-}};
 
 // The two prisms of a prism cube: bottom triangles counter-clockwise seen from above on either side
 // of the (i,j)–(i+1,j+1) diagonal (corners 0–2 below, 4–6 above), tops directly above.
@@ -49,27 +35,18 @@ bool FaceIsTriangulated(bool neighbour_inside, HybridCubeKind neighbour, const C
   return false;
 }
 
-void AddCentredTetCube(MeshDraft& draft, const CubeGrid& grid, int i, int j, int k) {
-  const std::array<NodeId, 8> corner = grid.CubeCorners(i, j, k);
+void AddHybridCentredTetCube(MeshDraft& draft, const CubeGrid& grid, int i, int j, int k) {
   const NodeId centre = draft.AddNode(Vec3(i + 0.5, j + 0.5, k + 0.5));
-  for (const CubeFace& face : kCubeFaces) {
+  std::uint8_t quad_faces = 0;
+  for (int f = 0; f < static_cast<int>(kCubeFaces.size()); ++f) {
+    const CubeFace& face = kCubeFaces[f];
     const int ni = i + face.step[0], nj = j + face.step[1], nk = k + face.step[2];
     const bool inside = grid.ContainsCube(ni, nj, nk);
     const HybridCubeKind neighbour =
         inside ? HybridCubeKindAt(ni, nj, nk, grid.nz()) : HybridCubeKind::kCentredTets;
-    std::array<NodeId, 4> base;
-    for (int c = 0; c < 4; ++c) base[c] = corner[face.corners[c]];
-    if (!FaceIsTriangulated(inside, neighbour, face)) {
-      draft.AddElement(ElementType::kPyramid, {base[0], base[1], base[2], base[3], centre});
-      continue;
-    }
-    // The global diagonal rule: split through the face's smallest node id, so the cube across
-    // the face (or the prism cube's triangles) use the same diagonal.
-    const int m = static_cast<int>(std::min_element(base.begin(), base.end()) - base.begin());
-    const NodeId a = base[m], b = base[(m + 1) % 4], c = base[(m + 2) % 4], d = base[(m + 3) % 4];
-    draft.AddElement(ElementType::kTetrahedron, {a, b, c, centre});
-    draft.AddElement(ElementType::kTetrahedron, {a, c, d, centre});
+    if (!FaceIsTriangulated(inside, neighbour, face)) quad_faces |= 1u << f;
   }
+  AddCentredTetCube(draft, grid.CubeCorners(i, j, k), centre, quad_faces);
 }
 
 }  // namespace
@@ -111,7 +88,7 @@ absl::StatusOr<Mesh> HybridBlock(int nx, int ny, int nz, double distortion, std:
             }
             break;
           case HybridCubeKind::kCentredTets:
-            AddCentredTetCube(draft, grid, i, j, k);
+            AddHybridCentredTetCube(draft, grid, i, j, k);
             break;
         }
       }
@@ -120,7 +97,7 @@ absl::StatusOr<Mesh> HybridBlock(int nx, int ny, int nz, double distortion, std:
   std::vector<double> moves = grid.InteriorMoves(draft, distortion);
   std::fill(moves.begin() + grid.node_count(), moves.end(), 0.5 * distortion);
   JitterNodes(draft, moves, seed);
-  return draft.Build();
+  return std::move(draft).Build();
 }
 
 }  // namespace getme::meshgen

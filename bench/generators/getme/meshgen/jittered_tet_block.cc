@@ -42,7 +42,7 @@ absl::StatusOr<Mesh> JitteredTetBlock(int nx, int ny, int nz, double jitter, std
     }
   }
   JitterNodes(draft, grid.InteriorMoves(draft, jitter), seed);
-  return draft.Build();
+  return std::move(draft).Build();
 }
 
 }  // namespace getme::meshgen

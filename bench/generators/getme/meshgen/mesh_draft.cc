@@ -7,6 +7,15 @@
 
 namespace getme::meshgen {
 
+void MeshDraft::Reserve(std::int64_t nodes, std::int64_t elements, std::int64_t element_nodes) {
+  x_.reserve(nodes);
+  y_.reserve(nodes);
+  z_.reserve(nodes);
+  types_.reserve(elements);
+  offsets_.reserve(elements + 1);
+  nodes_.reserve(element_nodes);
+}
+
 NodeId MeshDraft::AddNode(const Vec3& position) {
   x_.push_back(position.x());
   y_.push_back(position.y());
@@ -52,16 +61,22 @@ CompressedRows MeshDraft::NodeElements() const {
   return rows;
 }
 
-absl::StatusOr<Mesh> MeshDraft::Build() const {
+absl::StatusOr<Mesh> MeshDraft::Build() && {
   MeshBuilder builder;
   builder.Reserve(node_count(), element_count());
   for (std::size_t i = 0; i < x_.size(); ++i) builder.AddNode(x_[i], y_[i], z_[i]);
+  std::vector<double>().swap(x_);
+  std::vector<double>().swap(y_);
+  std::vector<double>().swap(z_);
   std::vector<std::int64_t> element(kMaxElementNodes);
   for (ElementId e = 0; e < static_cast<ElementId>(types_.size()); ++e) {
     const std::span<const NodeId> ids = element_nodes(e);
     element.assign(ids.begin(), ids.end());
     builder.AddElement(types_[e], element);
   }
+  std::vector<ElementType>().swap(types_);
+  std::vector<NodeId>().swap(nodes_);
+  std::vector<std::int64_t>{0}.swap(offsets_);
   return std::move(builder).Build();
 }
 

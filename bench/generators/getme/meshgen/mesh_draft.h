@@ -17,6 +17,9 @@ namespace getme::meshgen {
 // it into an immutable getme::Mesh through MeshBuilder.
 class MeshDraft {
  public:
+  // Sizes the storage up front: large generators would otherwise hold up to twice their arrays
+  // while a vector grows.
+  void Reserve(std::int64_t nodes, std::int64_t elements, std::int64_t element_nodes);
   NodeId AddNode(const Vec3& position);
   ElementId AddElement(ElementType type, std::span<const NodeId> nodes);
   ElementId AddElement(ElementType type, std::initializer_list<NodeId> nodes) {
@@ -40,8 +43,9 @@ class MeshDraft {
   // Elements containing each node (rows indexed by node id, ascending element ids).
   CompressedRows NodeElements() const;
 
-  // Hands the nodes and elements to MeshBuilder; no node is marked fixed.
-  absl::StatusOr<Mesh> Build() const;
+  // Hands the nodes and elements to MeshBuilder, freeing each array once it is copied so a
+  // 10M-element draft and the builder's copy are not held together; no node is marked fixed.
+  absl::StatusOr<Mesh> Build() &&;
 
  private:
   std::vector<double> x_, y_, z_;

@@ -8,6 +8,8 @@
 #include "getme/meshgen/distorted_hex_block.h"
 #include "getme/meshgen/hybrid_block.h"
 #include "getme/meshgen/jittered_tet_block.h"
+#include "getme/meshgen/plate_with_holes.h"
+#include "getme/meshgen/ring_in_block.h"
 
 namespace getme::meshgen {
 namespace {
@@ -17,8 +19,10 @@ absl::StatusOr<MeshKind> ParseKind(const std::string& kind) {
   if (kind == "tet") return MeshKind::kTetBlock;
   if (kind == "hybrid") return MeshKind::kHybridBlock;
   if (kind == "vessel") return MeshKind::kVessel;
-  return absl::InvalidArgumentError(
-      absl::StrCat("unknown mesh kind '", kind, "'; expected hex, tet, hybrid or vessel"));
+  if (kind == "plate") return MeshKind::kPlate;
+  if (kind == "ring") return MeshKind::kRing;
+  return absl::InvalidArgumentError(absl::StrCat(
+      "unknown mesh kind '", kind, "'; expected plate, ring, vessel, hex, tet or hybrid"));
 }
 
 absl::Status ParseSize(const std::string& flag, const std::string& value, MeshgenCommand& command) {
@@ -62,6 +66,7 @@ absl::Status ParseNumber(const std::string& flag, const std::string& value, T& o
 absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> args) {
   std::vector<std::string> positional;
   MeshgenCommand command;
+  bool mesh_size_given = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (!arg.starts_with("--")) {
@@ -84,11 +89,18 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
     if (arg == "--size") {
       status = ParseSize(arg, value, command);
     } else if (arg == "--distortion") {
-      status = ParseNumber(arg, value, command.distortion);
+      status = ParseNumber(arg, value, command.distortion.emplace());
+    } else if (arg == "--elements") {
+      status = ParseNumber(arg, value, command.elements.emplace());
+      if (status.ok() && *command.elements < 1) {
+        status = absl::InvalidArgumentError(
+            absl::StrCat("--elements: must be at least 1, got ", *command.elements));
+      }
     } else if (arg == "--seed") {
       status = ParseNumber(arg, value, command.seed);
     } else if (arg == "--mesh-size") {
       status = ParseNumber(arg, value, command.vessel.mesh_size);
+      mesh_size_given = true;
     } else if (arg == "--radius") {
       status = ParseNumber(arg, value, command.vessel.radius);
     } else if (arg == "--length") {
@@ -113,20 +125,45 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
   command.kind = *kind;
   command.output_path = positional[1];
   command.vessel.seed = command.seed;
+  const bool sized_kind = command.kind == MeshKind::kPlate || command.kind == MeshKind::kRing ||
+                          command.kind == MeshKind::kVessel;
+  if (command.elements.has_value() && !sized_kind) {
+    return absl::InvalidArgumentError(
+        "--elements applies to plate, ring and vessel; size the blocks with --size");
+  }
+  if (command.elements.has_value() && command.kind == MeshKind::kVessel && !mesh_size_given) {
+    command.vessel.mesh_size = kPaperVesselMeshSize;
+  }
   return command;
 }
 
 absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
+  const double block_distortion = command.distortion.value_or(kBlockDistortion);
   switch (command.kind) {
     case MeshKind::kHexBlock:
-      return DistortedHexBlock(command.nx, command.ny, command.nz, command.distortion,
-                               command.seed);
+      return DistortedHexBlock(command.nx, command.ny, command.nz, block_distortion, command.seed);
     case MeshKind::kTetBlock:
-      return JitteredTetBlock(command.nx, command.ny, command.nz, command.distortion, command.seed);
+      return JitteredTetBlock(command.nx, command.ny, command.nz, block_distortion, command.seed);
     case MeshKind::kHybridBlock:
-      return HybridBlock(command.nx, command.ny, command.nz, command.distortion, command.seed);
+      return HybridBlock(command.nx, command.ny, command.nz, block_distortion, command.seed);
     case MeshKind::kVessel:
-      return ThinPrismVessel(command.vessel);
+      return ThinPrismVessel(command.elements.has_value()
+                                 ? VesselOptionsForElements(*command.elements, command.vessel)
+                                 : command.vessel);
+    case MeshKind::kPlate: {
+      PlateWithHolesOptions options;
+      options.target_elements = command.elements.value_or(options.target_elements);
+      options.distortion = command.distortion.value_or(options.distortion);
+      options.seed = command.seed;
+      return PlateWithHoles(options);
+    }
+    case MeshKind::kRing: {
+      RingInBlockOptions options;
+      options.target_elements = command.elements.value_or(options.target_elements);
+      options.distortion = command.distortion.value_or(options.distortion);
+      options.seed = command.seed;
+      return RingInBlock(options);
+    }
   }
   return absl::InternalError("GenerateMesh: unhandled mesh kind");
 }

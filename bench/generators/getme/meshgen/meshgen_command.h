@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -10,32 +11,49 @@
 
 namespace getme::meshgen {
 
-enum class MeshKind { kHexBlock, kTetBlock, kHybridBlock, kVessel };
+enum class MeshKind { kHexBlock, kTetBlock, kHybridBlock, kVessel, kPlate, kRing };
+
+inline constexpr double kBlockDistortion = 0.3;
 
 // One invocation of getme-meshgen: which mesh, with which parameters, written where.
 struct MeshgenCommand {
   MeshKind kind = MeshKind::kHybridBlock;
   std::string output_path;
   int nx = 8, ny = 8, nz = 8;  // cubes per axis for the blocks
-  double distortion = 0.3;     // blocks: per-axis move of interior nodes, in edge lengths
+  // Per-axis move of interior nodes, in edge lengths; unset: each generator's default (blocks
+  // kBlockDistortion, plate and ring their options' defaults).
+  std::optional<double> distortion;
   std::uint64_t seed = 1;
+  // plate, ring, vessel: the element count to aim for; unset: the paper's size for plate and ring,
+  // the vessel options as given for vessel.
+  std::optional<std::int64_t> elements;
   ThinPrismVesselOptions vessel;
   bool binary = false;
 };
 
 inline constexpr char kMeshgenUsage[] =
     "usage: getme-meshgen KIND OUT.vtk [options]\n"
-    "  KIND: hex (distorted hexahedra), tet (jittered Kuhn tetrahedra),\n"
-    "        hybrid (hexahedra, prisms, pyramids and tetrahedra), vessel (tetrahedra + thin "
-    "prisms)\n"
+    "  KIND: the paper's examples at any size (--elements):\n"
+    "          plate  hexahedral plate with two drill holes in a tetrahedral box, pyramids\n"
+    "                 between (Sec. 4.1; default 34,050 elements)\n"
+    "          ring   tetrahedra around a ring (a hole) in a hexahedral block, pyramids between,\n"
+    "                 randomly distorted (Sec. 4.2; default 83,210 elements)\n"
+    "          vessel tetrahedral vessel in 6 thin prism layers (Sec. 4.3)\n"
+    "        blocks: hex (distorted hexahedra), tet (jittered Kuhn tetrahedra),\n"
+    "          hybrid (hexahedra, prisms, pyramids and tetrahedra)\n"
+    "  --elements N            plate/ring/vessel: aim for N elements (plate and ring within 10 %,\n"
+    "                          vessel within 20 %; vessel: a straight vessel whose length grows\n"
+    "                          with N, built from segments of at most 100k elements)\n"
     "  --size N | NX,NY,NZ     cubes per axis for hex/tet/hybrid (default 8)\n"
-    "  --distortion D          hex/tet/hybrid: interior node moves up to D edge lengths per axis "
-    "(default 0.3)\n"
+    "  --distortion D          interior node moves up to D edge lengths per axis (default 0.3\n"
+    "                          for hex/tet/hybrid, 0.2 plate, 0.6 ring)\n"
     "  --seed N                random seed (default 1; gmsh's seed for vessel)\n"
-    "  --mesh-size H           vessel: tetrahedron edge length (default 0.25)\n"
+    "  --mesh-size H           vessel: tetrahedron edge length (default 0.25; with --elements\n"
+    "                          0.38, which gives the paper's 68 % prisms and q_mean 0.30)\n"
     "  --radius R  --length L  --bend-angle A  --layers N  --layer-height-ratio F\n"
     "                          vessel geometry and prism layers (defaults 1, 6, 0, 6, 0.01);\n"
-    "                          --length 42 --bend-angle 1.5 gives ~100k elements, 60 % prisms\n"
+    "                          --length 42 --bend-angle 1.5 gives ~100k elements, 60 % prisms;\n"
+    "                          with --elements, --length and --bend-angle do not apply\n"
     "  --fix-wall              vessel: mark the outer wall (outer prism surface) fixed in the\n"
     "                          `fixed` point data; smooth with --free-boundary so the inflow\n"
     "                          and outflow caps may move (docs/thin-layers.md)\n"
