@@ -217,7 +217,7 @@ def mesquite_table(measurements, references):
         else:  # issue 5 gives only a time: compare GETMe's time to 99 % of its own gain
             target = "– (99 % of GETMe's gain)"
             reach = m["seconds_to_99_percent_gain"]
-            label = " (like-sized stand-in)"
+            label = " (generated like the paper's)"
         if reach:
             share = reach["median"] / mesquite_s
             reached = f"{seconds(reach)}"
