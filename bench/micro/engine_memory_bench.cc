@@ -1,0 +1,93 @@
+// Engine memory per element (issue 5 aims below 300 bytes): the resident memory a generated
+// hybrid mesh adds, and the peak a full GETMe run (simultaneous, then sequential) adds on top,
+// from the kernel's counters (VmRSS, and VmHWM reset through /proc/self/clear_refs). The mesh's
+// arrays are also summed by size as a cross-check that names where the bytes go.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "bench_meshes.h"
+#include "getme/smoother.h"
+
+namespace getme::bench {
+namespace {
+
+// A field of /proc/self/status (VmRSS, VmHWM) in bytes; -1 if unavailable.
+double ProcStatusBytes(const std::string& field) {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind(field + ":", 0) == 0) return 1024.0 * std::stod(line.substr(field.size() + 1));
+  }
+  return -1.0;
+}
+
+// Lets VmHWM start again from the current resident size.
+bool ResetPeakResident() {
+  std::ofstream clear_refs("/proc/self/clear_refs");
+  clear_refs << "5";
+  return static_cast<bool>(clear_refs.flush());
+}
+
+// The mesh's arrays by their sizes (capacity slack not included).
+double MeshArrayBytes(const Mesh& mesh) {
+  const auto nodes = static_cast<double>(mesh.node_count());
+  const auto elements = static_cast<double>(mesh.element_count());
+  const auto corners = static_cast<double>(mesh.corner_count());
+  double neighbours = 0.0;
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    neighbours += static_cast<double>(mesh.element_neighbours(e).size());
+  }
+  const double coordinates_and_flags = nodes * (3 * sizeof(double) + 2);
+  const double element_arrays = elements * (sizeof(ElementType) + 4 + 4 + 4);  // type, index,
+                                                                               // block id, order
+  const double connectivity = corners * sizeof(NodeId);
+  const double node_rows = 2 * ((nodes + 1) * 8 + corners * 4);  // node→element, node→corner
+  const double neighbour_rows = (elements + 1) * 8 + neighbours * 4;
+  return coordinates_and_flags + element_arrays + connectivity + node_rows + neighbour_rows;
+}
+
+void BM_EngineMemory(benchmark::State& state) {
+  ReleaseHybridMesh();
+  for (auto _ : state) {
+    const double before = ProcStatusBytes("VmRSS");
+    Mesh mesh = GenerateHybridMeshNear(state.range(0));
+    const double with_mesh = ProcStatusBytes("VmRSS");
+    if (!ResetPeakResident()) {
+      state.SkipWithError("cannot reset VmHWM through /proc/self/clear_refs");
+      return;
+    }
+    SmoothingParams params;
+    params.threads = 1;
+    params.simultaneous_max_iterations = 3;  // the buffers are the same for any iteration count
+    params.sequential_max_iterations = 10'000;
+    auto result = Smooth(mesh, params);
+    if (!result.ok()) {
+      state.SkipWithError(result.status().ToString().c_str());
+      return;
+    }
+    const double peak = ProcStatusBytes("VmHWM");
+    const auto elements = static_cast<double>(mesh.element_count());
+    state.counters["elements"] = elements;
+    state.counters["nodes_per_element"] = static_cast<double>(mesh.node_count()) / elements;
+    state.counters["mesh_rss_bytes_per_element"] = (with_mesh - before) / elements;
+    state.counters["mesh_array_bytes_per_element"] = MeshArrayBytes(mesh) / elements;
+    state.counters["smoothing_peak_bytes_per_element"] = (peak - with_mesh) / elements;
+    state.counters["engine_peak_bytes_per_element"] = (peak - before) / elements;
+  }
+}
+
+}  // namespace
+
+void RegisterEngineMemoryBenchmarks() {
+  benchmark::RegisterBenchmark("EngineMemory", BM_EngineMemory)
+      ->Args({1'000'000})
+      ->ArgNames({"elements"})
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace getme::bench
