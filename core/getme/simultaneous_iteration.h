@@ -8,6 +8,14 @@
 
 namespace getme {
 
+// Node coordinates of a whole mesh, structure of arrays like Mesh's own.
+struct NodePositions {
+  std::vector<double> x, y, z;
+
+  void CopyFrom(const Mesh& mesh);
+  void CopyTo(Mesh& mesh) const;
+};
+
 // One iteration of the simultaneous substep (Sec. 3.1, Steps 1–3) on context.mesh, with its
 // buffers allocated once per phase rather than per iteration. RunSimultaneous drives it; the
 // micro-benchmarks time it alone.
@@ -22,20 +30,22 @@ class SimultaneousIteration {
   // Moves every movable node once and leaves context.quality up to date.
   Outcome Run(SmoothingContext& context);
 
+  // Every node's position before the last Run: the previous state, kept anyway for Step 3, so
+  // the caller need not copy the mesh to remember it.
+  const NodePositions& previous_positions() const { return previous_; }
+
+  // Heap bytes of the buffers (for the memory benchmark).
+  std::int64_t AllocatedBytes() const;
+
  private:
-  struct Coordinates {
-    std::vector<double> x, y, z;
-    void CopyFrom(const Mesh& mesh);
-  };
   void TransformAll(const SmoothingContext& context);
   void UpdateNodes(SmoothingContext& context);
+  void UpdateNodeRange(SmoothingContext& context, std::int64_t begin, std::int64_t end);
   std::int64_t RepairInvalid(SmoothingContext& context);
 
   std::vector<double> corner_xyz_;      // w_j·p'_{i,j} per corner (Mesh::node_corners numbering)
   std::vector<double> element_weight_;  // w_j per element
-  std::vector<std::uint8_t> halvings_;  // per node: step halvings of the repair (Step 3)
-  std::vector<std::uint8_t> element_mark_;
-  Coordinates old_position_, new_position_;
+  NodePositions previous_;
 };
 
 }  // namespace getme

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "getme/block_loops.h"
+#include "getme/chunked_summary.h"
 #include "getme/vec3.h"
 
 namespace getme {
@@ -39,6 +40,28 @@ void SmoothingContext::RefreshQuality() {
               MeanRatioOrInvalid<kType>(GatherNodes<kType>(m, block.nodes.data() + i * kNodes));
         }
       });
+}
+
+SmoothingContext::Summary SmoothingContext::RefreshQualityAndSummarize() {
+  quality.resize(mesh.element_count());
+  const Mesh& m = mesh;
+  // The chunks run over canonical positions, as Summarize's do, so each quality is added to its
+  // chunk's sums in the same order and the summary has the same bits.
+  return SummarizeInChunks(m.element_count(), pool,
+                           [&](std::int64_t first, std::int64_t last, QualityAccumulator& chunk) {
+                             ForEachCanonicalRange(
+                                 m, first, last,
+                                 [&]<ElementType kType>(const ElementBlock& block,
+                                                        std::int64_t begin, std::int64_t end) {
+                                   constexpr int kNodes = ElementTable<kType>::kNodes;
+                                   for (std::int64_t i = begin; i < end; ++i) {
+                                     const double q = MeanRatioOrInvalid<kType>(
+                                         GatherNodes<kType>(m, block.nodes.data() + i * kNodes));
+                                     quality[block.elements[i]] = q;
+                                     chunk.Add(q);
+                                   }
+                                 });
+                           });
 }
 
 void SmoothingContext::FinishPhase(PhaseSummary& summary, const Summary& state,
