@@ -52,31 +52,44 @@ SimultaneousIteration::Outcome SimultaneousIteration::Run(SmoothingContext& cont
 // Step 1: transform every element (eq. 4 with the quality-dependent σ_j of Step 1.1), scale and
 // relax it (Step 1.2), and store its weighted new nodes w_j·p'_{i,j} per corner and w_j.
 void SimultaneousIteration::TransformAll(const SmoothingContext& context) {
+  ParallelForEachBlock(
+      context.mesh, context.pool,
+      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
+        TransformRange<kType>(context, block, begin, end);
+      });
+}
+
+// Block entries [begin, end), kLanes elements at a time (lanes.h); pow lane by lane.
+template <ElementType kType>
+void SimultaneousIteration::TransformRange(const SmoothingContext& context,
+                                           const ElementBlock& block, std::int64_t begin,
+                                           std::int64_t end) {
+  constexpr int kNodes = ElementTable<kType>::kNodes;
   const Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
-  ParallelForEachBlock(
-      mesh, context.pool,
-      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
-        constexpr int kNodes = ElementTable<kType>::kNodes;
-        const int t = TypeIndex(kType);
-        const double sigma_min = params.simultaneous_sigma_min[t];
-        const double sigma_span = params.simultaneous_sigma_max[t] - sigma_min;
-        const std::int64_t corner_base = mesh.corner_offset(kType);
-        for (std::int64_t i = begin; i < end; ++i) {
-          const double q = std::max(0.0, context.quality[block.elements[i]]);
-          const auto nodes = GatherNodes<kType>(mesh, block.nodes.data() + i * kNodes);
-          const auto moved = RegularizingStep<kType>(nodes, sigma_min + sigma_span * (1.0 - q),
-                                                     params.simultaneous_rho);
-          const double weight = std::pow(1.0 - q, params.simultaneous_eta);
-          element_weight_[block.elements[i]] = weight;
-          double* out = corner_xyz_.data() + 3 * (corner_base + i * kNodes);
-          for (int k = 0; k < kNodes; ++k) {
-            out[3 * k + 0] = weight * moved[k].x();
-            out[3 * k + 1] = weight * moved[k].y();
-            out[3 * k + 2] = weight * moved[k].z();
-          }
-        }
-      });
+  const double sigma_min = params.simultaneous_sigma_min[TypeIndex(kType)];
+  const double sigma_span = params.simultaneous_sigma_max[TypeIndex(kType)] - sigma_min;
+  const std::int64_t corner_base = mesh.corner_offset(kType);
+  for (std::int64_t i = begin; i < end; i += kLanes) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
+    Lanes q{};
+    for (int l = 0; l < kLanes; ++l) {
+      q[l] = std::max(0.0, context.quality[block.elements[i + std::min(l, count - 1)]]);
+    }
+    const auto moved = RegularizingStep<kType, Lanes>(
+        GatherLanes<kType>(mesh.x(), mesh.y(), mesh.z(), block.nodes.data() + i * kNodes, count),
+        sigma_min + sigma_span * (1.0 - q), params.simultaneous_rho);
+    for (int l = 0; l < count; ++l) {
+      const double weight = std::pow(1.0 - q[l], params.simultaneous_eta);
+      element_weight_[block.elements[i + l]] = weight;
+      double* out = corner_xyz_.data() + 3 * (corner_base + (i + l) * kNodes);
+      for (int k = 0; k < kNodes; ++k) {
+        out[3 * k + 0] = weight * moved[k].x[l];
+        out[3 * k + 1] = weight * moved[k].y[l];
+        out[3 * k + 2] = weight * moved[k].z[l];
+      }
+    }
+  }
 }
 
 // Step 2: p'_i = Σ w_j p'_{i,j} / Σ w_j over the node's elements, summed in the fixed corner

@@ -39,6 +39,9 @@ class SimultaneousIteration {
 
  private:
   void TransformAll(const SmoothingContext& context);
+  template <ElementType kType>
+  void TransformRange(const SmoothingContext& context, const ElementBlock& block,
+                      std::int64_t begin, std::int64_t end);
   void UpdateNodes(SmoothingContext& context);
   void UpdateNodeRange(SmoothingContext& context, std::int64_t begin, std::int64_t end);
   std::int64_t RepairInvalid(SmoothingContext& context);
