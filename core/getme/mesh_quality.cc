@@ -4,12 +4,14 @@
 #include <cmath>
 
 #include "getme/block_loops.h"
-#include "getme/chunked_summary.h"
 #include "getme/element_quality.h"
 #include "getme/vec3.h"
 
 namespace getme {
 namespace {
+
+// Fixed chunk size of deterministic reductions: independent of the thread count.
+constexpr std::int64_t kReductionChunk = 8192;
 
 template <typename Kernel>
 void ComputePerElement(const Mesh& mesh, ThreadPool& pool, Kernel&& kernel, auto* out) {
@@ -65,10 +67,31 @@ namespace {
 // Reduces value(0), value(1), ... value(count - 1) in fixed chunks.
 template <typename Value>
 QualitySummary SummarizeChunked(std::int64_t count, Value&& value, ThreadPool& pool) {
-  return SummarizeInChunks(count, pool,
-                           [&](std::int64_t begin, std::int64_t end, QualityAccumulator& chunk) {
-                             for (std::int64_t i = begin; i < end; ++i) chunk.Add(value(i));
-                           });
+  if (count == 0) return {};
+  const std::int64_t chunks = (count + kReductionChunk - 1) / kReductionChunk;
+  std::vector<QualitySummary> partial(chunks);  // q_mean holds the chunk's sum
+  pool.ParallelFor(chunks, 1, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t c = first; c < last; ++c) {
+      const std::int64_t end = std::min(count, (c + 1) * kReductionChunk);
+      QualitySummary chunk{1.0, 0.0, 0};
+      for (std::int64_t i = c * kReductionChunk; i < end; ++i) {
+        const double raw = value(i);
+        const double q = std::max(0.0, raw);
+        chunk.q_min = std::min(chunk.q_min, q);
+        chunk.q_mean += q;
+        if (raw < 0.0) ++chunk.invalid;
+      }
+      partial[c] = chunk;
+    }
+  });
+  QualitySummary summary{1.0, 0.0, 0};
+  for (const QualitySummary& chunk : partial) {
+    summary.q_min = std::min(summary.q_min, chunk.q_min);
+    summary.q_mean += chunk.q_mean;
+    summary.invalid += chunk.invalid;
+  }
+  summary.q_mean /= static_cast<double>(count);
+  return summary;
 }
 
 }  // namespace

@@ -50,7 +50,8 @@ absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
   // Hand on the best-q_mean state, not merely the last one (NOTES.md §5).
   if (best_iteration != summary.iterations) {
     best_position.CopyTo(mesh);
-    current = context.RefreshQualityAndSummarize();
+    context.RefreshQuality();
+    current = context.Summarize();
   }
   context.FinishPhase(summary, current, phase_start);
   if (cancelled) return absl::CancelledError("smoothing cancelled during the simultaneous substep");

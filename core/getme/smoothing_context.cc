@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "getme/block_loops.h"
-#include "getme/chunked_summary.h"
 #include "getme/vec3.h"
 
 namespace getme {
@@ -31,50 +30,18 @@ double SmoothingContext::ElapsedSeconds() const {
 void SmoothingContext::RefreshQuality() {
   quality.resize(mesh.element_count());
   const Mesh& m = mesh;
+  // kLanes elements at a time (lanes.h): the same bits as one at a time.
   ParallelForEachBlock(
       m, pool,
       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
         constexpr int kNodes = ElementTable<kType>::kNodes;
-        for (std::int64_t i = begin; i < end; ++i) {
-          quality[block.elements[i]] =
-              MeanRatioOrInvalid<kType>(GatherNodes<kType>(m, block.nodes.data() + i * kNodes));
+        for (std::int64_t i = begin; i < end; i += kLanes) {
+          const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
+          const Lanes q = MeanRatioOrInvalid<kType, Lanes>(
+              GatherLanes<kType>(m.x(), m.y(), m.z(), block.nodes.data() + i * kNodes, count));
+          for (int l = 0; l < count; ++l) quality[block.elements[i + l]] = q[l];
         }
       });
-}
-
-namespace {
-
-// The qualities of block entries [begin, end), kLanes elements at a time (lanes.h), stored and
-// added to the chunk's sums in entry order.
-template <ElementType kType>
-void RefreshBlockRange(const Mesh& mesh, const ElementBlock& block, std::int64_t begin,
-                       std::int64_t end, std::vector<double>& quality, QualityAccumulator& chunk) {
-  constexpr int kNodes = ElementTable<kType>::kNodes;
-  for (std::int64_t i = begin; i < end; i += kLanes) {
-    const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
-    const Lanes q = MeanRatioOrInvalid<kType, Lanes>(
-        GatherLanes<kType>(mesh.x(), mesh.y(), mesh.z(), block.nodes.data() + i * kNodes, count));
-    for (int l = 0; l < count; ++l) {
-      quality[block.elements[i + l]] = q[l];
-      chunk.Add(q[l]);
-    }
-  }
-}
-
-}  // namespace
-
-SmoothingContext::Summary SmoothingContext::RefreshQualityAndSummarize() {
-  quality.resize(mesh.element_count());
-  // The chunks run over canonical positions, as Summarize's do, so each quality is added to its
-  // chunk's sums in the same order and the summary has the same bits.
-  auto refresh_chunk = [&](std::int64_t first, std::int64_t last, QualityAccumulator& chunk) {
-    ForEachCanonicalRange(
-        mesh, first, last,
-        [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
-          RefreshBlockRange<kType>(mesh, block, begin, end, quality, chunk);
-        });
-  };
-  return SummarizeInChunks(mesh.element_count(), pool, refresh_chunk);
 }
 
 void SmoothingContext::FinishPhase(PhaseSummary& summary, const Summary& state,

@@ -42,8 +42,6 @@ struct SmoothingContext {
   // q_min and q_mean of `quality` with invalid elements as 0, and the invalid count.
   using Summary = QualitySummary;
   Summary Summarize() const { return SummarizeQualities(quality, mesh.canonical_order(), pool); }
-  // RefreshQuality() and then Summarize() in one pass over the mesh, with the same result.
-  Summary RefreshQualityAndSummarize();
   // Completes a phase: records the state it hands on and its duration in `summary`, and reports
   // the phase's final event.
   void FinishPhase(PhaseSummary& summary, const Summary& state, double phase_start) const;
