@@ -5,11 +5,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
 #include "bench_meshes.h"
+#include "getme/meshgen/distorted_hex_block.h"
 #include "getme/smoother.h"
 
 namespace getme::bench {
@@ -46,11 +49,22 @@ double MeshArrayBytes(const Mesh& mesh) {
   return coordinates_and_flags + element_arrays + connectivity + node_rows;
 }
 
+// kind 0: the hybrid mesh of the other benchmarks (mostly tetrahedra, 4.1 corners and 0.24 nodes
+// per element); kind 1: distorted hexahedra (8 corners and 1 node per element), the most memory
+// per element for the simultaneous substep's corner buffer.
+Mesh GenerateMesh(std::int64_t elements, int kind) {
+  if (kind == 0) return GenerateHybridMeshNear(elements);
+  const int n = static_cast<int>(std::lround(std::cbrt(static_cast<double>(elements))));
+  auto mesh = meshgen::DistortedHexBlock(n, n, n, 0.3, 5);
+  if (!mesh.ok()) std::abort();
+  return *std::move(mesh);
+}
+
 void BM_EngineMemory(benchmark::State& state) {
   ReleaseHybridMesh();
   for (auto _ : state) {
     const double before = ProcStatusBytes("VmRSS");
-    Mesh mesh = GenerateHybridMeshNear(state.range(0));
+    Mesh mesh = GenerateMesh(state.range(0), static_cast<int>(state.range(1)));
     const double with_mesh = ProcStatusBytes("VmRSS");
     if (!ResetPeakResident()) {
       state.SkipWithError("cannot reset VmHWM through /proc/self/clear_refs");
@@ -79,11 +93,14 @@ void BM_EngineMemory(benchmark::State& state) {
 }  // namespace
 
 void RegisterEngineMemoryBenchmarks() {
-  benchmark::RegisterBenchmark("EngineMemory", BM_EngineMemory)
-      ->Args({1'000'000})
-      ->ArgNames({"elements"})
-      ->Iterations(1)
-      ->Unit(benchmark::kMillisecond);
+  for (int kind : {0, 1}) {
+    benchmark::RegisterBenchmark(kind == 0 ? "EngineMemory/hybrid" : "EngineMemory/hex",
+                                 BM_EngineMemory)
+        ->Args({1'000'000, kind})
+        ->ArgNames({"elements", "kind"})
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
+  }
 }
 
 }  // namespace getme::bench
