@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "getme/element_tables.h"
+#include "getme/lanes.h"
 #include "getme/vec3.h"
 
 namespace getme {
@@ -36,28 +37,36 @@ inline constexpr double kInvalidQuality = -1.0;
 // Mean ratio quality number (Def. 3, eq. 10) clamped to [0, 1], or kInvalidQuality when a node
 // tetrahedron has det ≤ 0: one pass gives both validity and quality. The clamp matters because
 // rounding can give a regular element 1 + 2e-16, which would make the simultaneous weight
-// (1 − q)^η NaN (NOTES.md §4).
-template <ElementType kType>
-inline double MeanRatioOrInvalid(const ElementNodes<kType>& p) {
+// (1 − q)^η NaN (NOTES.md §4). Generic over the lane type S (lanes.h).
+template <ElementType kType, typename S>
+inline S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
-  double sum = 0.0;
+  S sum = Splat<S>(0.0);
+  auto valid = AllLanes<S>();
   for (const auto& t : Table::kNodeTets) {
-    const Vec3 d0 = p[t[1]] - p[t[0]];
-    const Vec3 d1 = p[t[2]] - p[t[0]];
-    const Vec3 d2 = p[t[3]] - p[t[0]];
-    const double det_d = d0.dot(d1.cross(d2));
-    if (!(det_d > 0.0)) return kInvalidQuality;
+    const Point3<S> d0 = p[t[1]] - p[t[0]];
+    const Point3<S> d1 = p[t[2]] - p[t[0]];
+    const Point3<S> d2 = p[t[3]] - p[t[0]];
+    const S det_d = Dot(d0, Cross(d1, d2));
+    valid = Both(valid, det_d > 0.0);
     // S = D W⁻¹ with W⁻¹ upper triangular: column j of S is Σ_i D_i · W⁻¹(i, j).
-    const Vec3 s0 = d0 * w[0][0];
-    const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const double det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
-    const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
-    sum += 3.0 * std::cbrt(det_s * det_s) / frobenius2;
+    const Point3<S> s0 = d0 * w[0][0];
+    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
+    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
+    const S det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
+    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
+    sum += 3.0 * Cbrt(det_s * det_s) / frobenius2;
   }
-  const double q = sum / static_cast<double>(Table::kNodeTets.size());
-  return std::clamp(q, 0.0, 1.0);
+  const S q = sum / static_cast<double>(Table::kNodeTets.size());
+  // std::clamp(q, 0, 1), lane by lane.
+  const S clamped = Select(q < 0.0, Splat<S>(0.0), Select(1.0 < q, Splat<S>(1.0), q));
+  return Select(valid, clamped, Splat<S>(kInvalidQuality));
+}
+
+template <ElementType kType>
+inline double MeanRatioOrInvalid(const ElementNodes<kType>& p) {
+  return MeanRatioOrInvalid<kType, double>(ToLaneNodes<kType>(p));
 }
 
 // Mean ratio (Def. 3), with an invalid element counted as q = 0 (NOTES.md §4).

@@ -7,6 +7,7 @@
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
+#include "getme/element_neighbours.h"
 #include "getme/element_tables.h"
 
 namespace getme {
@@ -67,6 +68,24 @@ std::span<const NodeId> Mesh::element_nodes(ElementId element) const {
   const auto& nodes = blocks_[TypeIndex(element_type)].nodes;
   return {nodes.data() + static_cast<std::int64_t>(block_index_[element]) * n,
           static_cast<std::size_t>(n)};
+}
+
+std::span<const ElementId> Mesh::element_neighbours(ElementId element) const {
+  std::call_once(element_neighbours_->built, [&] {
+    CompressedRows& table = element_neighbours_->rows;
+    ElementNeighbourFinder finder;
+    table.offsets.assign(element_count() + 1, 0);
+    for (ElementId e = 0; e < element_count(); ++e) {
+      const std::span<const ElementId> row = finder.Find(*this, e);
+      table.offsets[e + 1] = table.offsets[e] + static_cast<std::int64_t>(row.size());
+    }
+    table.items.reserve(table.offsets.back());
+    for (ElementId e = 0; e < element_count(); ++e) {
+      const std::span<const ElementId> row = finder.Find(*this, e);
+      table.items.insert(table.items.end(), row.begin(), row.end());
+    }
+  });
+  return element_neighbours_->rows.Row(element);
 }
 
 void MeshBuilder::Reserve(std::int64_t nodes, std::int64_t elements) {
@@ -184,27 +203,6 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
       for (NodeId node : mesh.element_nodes(e)) emit(node, e);
     }
   });
-
-  // Element neighbours: the union of the node rows of its nodes, minus itself, canonical order.
-  {
-    std::vector<std::int32_t> ranks;
-    mesh.element_neighbours_.offsets.assign(element_count + 1, 0);
-    for (std::int64_t e = 0; e < element_count; ++e) {
-      ranks.clear();
-      for (NodeId node : mesh.element_nodes(static_cast<ElementId>(e))) {
-        for (ElementId other : mesh.node_elements(node)) {
-          if (other != e) ranks.push_back(mesh.canonical_rank(other));
-        }
-      }
-      std::sort(ranks.begin(), ranks.end());
-      ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
-      for (std::int32_t rank : ranks) {
-        mesh.element_neighbours_.items.push_back(mesh.canonical_order_[rank]);
-      }
-      mesh.element_neighbours_.offsets[e + 1] =
-          static_cast<std::int64_t>(mesh.element_neighbours_.items.size());
-    }
-  }
 
   // Boundary: faces used by exactly one element (sorting groups equal faces together).
   std::vector<FaceKey> faces;

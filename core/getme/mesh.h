@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <utility>
 #include <vector>
@@ -80,9 +82,10 @@ class Mesh {
   // Elements containing the node, in canonical order.
   std::span<const ElementId> node_elements(NodeId node) const { return node_elements_.Row(node); }
   // Elements sharing at least one node with the element (excluding itself), canonical order.
-  std::span<const ElementId> element_neighbours(ElementId element) const {
-    return element_neighbours_.Row(element);
-  }
+  // The table is built on the first call, not by Build(): on a tetrahedral mesh it holds about
+  // 80 entries per element, more memory than everything else, so the engine collects neighbours
+  // per element instead (ElementNeighbourFinder). Thread-safe; copies of a mesh share the table.
+  std::span<const ElementId> element_neighbours(ElementId element) const;
   // Node→corner adjacency: corner c of block t is t's corner_offset + block_index·NodeCount + k.
   // Used by the simultaneous substep to gather transformed nodes in a fixed order.
   const CompressedRows& node_corners() const { return node_corners_; }
@@ -100,7 +103,11 @@ class Mesh {
   std::array<std::int64_t, kElementTypeCount> block_rank_offset_{};
   std::vector<ElementId> canonical_order_;
   CompressedRows node_elements_;
-  CompressedRows element_neighbours_;
+  struct LazyRows {
+    std::once_flag built;
+    CompressedRows rows;
+  };
+  std::shared_ptr<LazyRows> element_neighbours_ = std::make_shared<LazyRows>();
   CompressedRows node_corners_;
   std::int64_t boundary_face_count_ = 0;
 };

@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "getme/element_neighbours.h"
 #include "getme/element_quality.h"
 #include "getme/indexed_min_heap.h"
 #include "getme/transform.h"
@@ -61,6 +62,7 @@ class SequentialSubstep {
   std::vector<NodeBackup> undo_since_best_;
   std::vector<NodeBackup> pick_backup_;
   std::vector<NodeBackup> pick_target_;
+  ElementNeighbourFinder neighbour_finder_;
   std::vector<ElementId> affected_;
   std::vector<double> affected_quality_;
   std::vector<double> affected_criterion_;
@@ -116,7 +118,7 @@ std::int64_t SequentialSubstep::TransformWorst() {
   // Step 3.1: the element and its neighbours must stay valid. With backtracking (a safeguard,
   // docs/quality.md) a step that would invert a neighbour is retried at half the length.
   affected_.assign(1, pick);
-  const auto neighbours = mesh_.element_neighbours(pick);
+  const auto neighbours = neighbour_finder_.Find(mesh_, pick);
   affected_.insert(affected_.end(), neighbours.begin(), neighbours.end());
   affected_quality_.resize(affected_.size());
   affected_criterion_.resize(affected_.size());

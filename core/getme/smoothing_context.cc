@@ -30,13 +30,16 @@ double SmoothingContext::ElapsedSeconds() const {
 void SmoothingContext::RefreshQuality() {
   quality.resize(mesh.element_count());
   const Mesh& m = mesh;
+  // kLanes elements at a time (lanes.h): the same bits as one at a time.
   ParallelForEachBlock(
       m, pool,
       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
         constexpr int kNodes = ElementTable<kType>::kNodes;
-        for (std::int64_t i = begin; i < end; ++i) {
-          quality[block.elements[i]] =
-              MeanRatioOrInvalid<kType>(GatherNodes<kType>(m, block.nodes.data() + i * kNodes));
+        for (std::int64_t i = begin; i < end; i += kLanes) {
+          const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
+          const Lanes q = MeanRatioOrInvalid<kType, Lanes>(
+              GatherLanes<kType>(m.x(), m.y(), m.z(), block.nodes.data() + i * kNodes, count));
+          for (int l = 0; l < count; ++l) quality[block.elements[i + l]] = q[l];
         }
       });
 }

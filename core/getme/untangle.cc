@@ -7,6 +7,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "getme/element_neighbours.h"
 #include "getme/element_quality.h"
 #include "getme/node_neighbours.h"
 #include "getme/transform.h"
@@ -60,6 +61,7 @@ class Untangler {
   SmoothingContext& context_;
   Mesh& mesh_;
   const CompressedRows neighbours_;
+  ElementNeighbourFinder neighbour_finder_;
   std::vector<ElementId> region_;
 };
 
@@ -90,7 +92,7 @@ double Untangler::LocalLength(NodeId node) const {
 
 bool Untangler::Repair(ElementId element) {
   region_.assign(1, element);
-  const auto neighbours = mesh_.element_neighbours(element);
+  const auto neighbours = neighbour_finder_.Find(mesh_, element);
   region_.insert(region_.end(), neighbours.begin(), neighbours.end());
   const std::span<const NodeId> ids = mesh_.element_nodes(element);
   auto x = mesh_.x();

@@ -2,9 +2,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
+#include <algorithm>
 #include <array>
 
 #include "getme/element_tables.h"
+#include "getme/lanes.h"
 #include "getme/mesh.h"
 
 namespace getme {
@@ -29,6 +31,44 @@ inline ElementNodes<kType> GatherNodes(std::span<const double> x, std::span<cons
 template <ElementType kType>
 inline ElementNodes<kType> GatherNodes(const Mesh& mesh, const NodeId* ids) {
   return GatherNodes<kType>(mesh.x(), mesh.y(), mesh.z(), ids);
+}
+
+// An element's nodes with lane-typed coordinates (lanes.h): S = double for one element, Lanes for
+// kLanes elements at once. The generic kernels work on these.
+template <ElementType kType, typename S>
+using LaneNodes = std::array<Point3<S>, ElementTable<kType>::kNodes>;
+
+template <ElementType kType>
+inline LaneNodes<kType, double> ToLaneNodes(const ElementNodes<kType>& p) {
+  LaneNodes<kType, double> nodes;
+  for (int k = 0; k < ElementTable<kType>::kNodes; ++k) nodes[k] = {p[k].x(), p[k].y(), p[k].z()};
+  return nodes;
+}
+
+template <ElementType kType>
+inline ElementNodes<kType> ToElementNodes(const LaneNodes<kType, double>& p) {
+  ElementNodes<kType> nodes;
+  for (int k = 0; k < ElementTable<kType>::kNodes; ++k) nodes[k] = Vec3(p[k].x, p[k].y, p[k].z);
+  return nodes;
+}
+
+// Gathers the nodes of `count` (1..kLanes) consecutive block entries whose node ids start at
+// `ids`, one element per lane; lanes past `count` repeat the last element.
+template <ElementType kType>
+inline LaneNodes<kType, Lanes> GatherLanes(std::span<const double> x, std::span<const double> y,
+                                           std::span<const double> z, const NodeId* ids,
+                                           int count) {
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  LaneNodes<kType, Lanes> nodes;
+  for (int l = 0; l < kLanes; ++l) {
+    const NodeId* element = ids + std::min(l, count - 1) * kNodes;
+    for (int k = 0; k < kNodes; ++k) {
+      nodes[k].x[l] = x[element[k]];
+      nodes[k].y[l] = y[element[k]];
+      nodes[k].z[l] = z[element[k]];
+    }
+  }
+  return nodes;
 }
 
 }  // namespace getme
