@@ -36,12 +36,6 @@ SimultaneousIteration::SimultaneousIteration(const Mesh& mesh)
   previous_.z.resize(mesh.node_count());
 }
 
-std::int64_t SimultaneousIteration::AllocatedBytes() const {
-  return static_cast<std::int64_t>(
-      sizeof(double) * (corner_xyz_.capacity() + element_weight_.capacity() +
-                        previous_.x.capacity() + previous_.y.capacity() + previous_.z.capacity()));
-}
-
 SimultaneousIteration::Outcome SimultaneousIteration::Run(SmoothingContext& context) {
   TransformAll(context);
   UpdateNodes(context);

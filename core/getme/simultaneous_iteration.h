@@ -34,9 +34,6 @@ class SimultaneousIteration {
   // the caller need not copy the mesh to remember it.
   const NodePositions& previous_positions() const { return previous_; }
 
-  // Heap bytes of the buffers (for the memory benchmark).
-  std::int64_t AllocatedBytes() const;
-
  private:
   void TransformAll(const SmoothingContext& context);
   template <ElementType kType>
