@@ -255,8 +255,8 @@ def micro_table(data):
 
 
 def header(machine):
-    provisional = ("**Provisional** (a `--quick` run: small meshes, one repeat, on a machine other "
-                   "jobs were loading; the full run replaces these numbers).\n\n"
+    provisional = ("**Provisional** (a `--quick` run: small meshes, one repeat; the full run "
+                   "replaces these numbers).\n\n"
                    if machine["mode"] == "quick" else "")
     load = machine.get("load_average_start", [0])[0], machine.get("load_average_end", [0])[0]
     return (f"{provisional}Measured {machine['date']}, commit `{machine['commit']}`, "
