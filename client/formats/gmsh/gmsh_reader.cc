@@ -378,6 +378,39 @@ class Parser {
     return static_cast<int>(value);
   }
 
+  struct SectionHeader41 {
+    std::int64_t blocks = 0;
+    std::int64_t count = 0;
+  };
+
+  // The four numbers that open a 4.1 $Nodes or $Elements section (`kind` "node" or "element"):
+  // entity blocks, entries, minimum and maximum tag (read past: tags are checked one by one).
+  // The counts are checked against the bytes left, at least 8 per block and `entry_bytes` per
+  // entry, before anything is reserved.
+  absl::StatusOr<SectionHeader41> ReadSectionHeader41(absl::string_view kind,
+                                                      std::int64_t entry_bytes) {
+    const std::string names[4] = {
+        "the number of entity blocks", absl::StrCat("the number of ", kind, "s"),
+        absl::StrCat("the minimum ", kind, " tag"), absl::StrCat("the maximum ", kind, " tag")};
+    std::int64_t values[4];
+    std::string where[4];
+    for (int k = 0; k < 4; ++k) {
+      absl::StatusOr<std::int64_t> value = Size([&] { return names[k]; });
+      if (!value.ok()) return value.status();
+      values[k] = *value;
+      where[k] = cursor_.Where();
+    }
+    if (absl::Status status = CheckCount(values[0], 8, absl::StrCat(kind, " blocks"), where[0]);
+        !status.ok()) {
+      return status;
+    }
+    if (absl::Status status = CheckCount(values[1], entry_bytes, absl::StrCat(kind, "s"), where[1]);
+        !status.ok()) {
+      return status;
+    }
+    return SectionHeader41{values[0], values[1]};
+  }
+
   // The entity (dimension, tag) that opens block `b` of `blocks` of a 4.1 $Nodes or $Elements
   // section; `kind` is "node" or "element".
   absl::StatusOr<GmshDimTag> BlockEntity(absl::string_view kind, std::int64_t b,
@@ -526,27 +559,11 @@ class Parser {
   }
 
   absl::Status ParseNodes41() {
-    std::int64_t header[4];
-    std::string where[4];
-    static constexpr absl::string_view kHeader[] = {"the number of entity blocks",
-                                                    "the number of nodes", "the minimum node tag",
-                                                    "the maximum node tag"};
-    for (int k = 0; k < 4; ++k) {
-      absl::StatusOr<std::int64_t> value = Size([&] { return std::string(kHeader[k]); });
-      if (!value.ok()) return value.status();
-      header[k] = *value;
-      where[k] = cursor_.Where();
-    }
-    const std::int64_t blocks = header[0];
-    const std::int64_t count = header[1];
-    if (absl::Status status = CheckCount(blocks, 8, "node blocks", where[0]); !status.ok()) {
-      return status;
-    }
-    if (absl::Status status =
-            CheckCount(count, cursor_.binary() ? 24 + cursor_.size_t_size() : 8, "nodes", where[1]);
-        !status.ok()) {
-      return status;
-    }
+    absl::StatusOr<SectionHeader41> header =
+        ReadSectionHeader41("node", cursor_.binary() ? 24 + cursor_.size_t_size() : 8);
+    if (!header.ok()) return header.status();
+    const std::int64_t blocks = header->blocks;
+    const std::int64_t count = header->count;
     if (absl::Status status = BeginNodes(count); !status.ok()) return status;
     extras().node_blocks.reserve(blocks);
     std::int64_t read = 0;
@@ -767,27 +784,11 @@ class Parser {
   }
 
   absl::Status ParseElements41() {
-    std::int64_t header[4];
-    std::string where[4];
-    static constexpr absl::string_view kHeader[] = {
-        "the number of entity blocks", "the number of elements", "the minimum element tag",
-        "the maximum element tag"};
-    for (int k = 0; k < 4; ++k) {
-      absl::StatusOr<std::int64_t> value = Size([&] { return std::string(kHeader[k]); });
-      if (!value.ok()) return value.status();
-      header[k] = *value;
-      where[k] = cursor_.Where();
-    }
-    const std::int64_t blocks = header[0];
-    const std::int64_t count = header[1];
-    if (absl::Status status = CheckCount(blocks, 8, "element blocks", where[0]); !status.ok()) {
-      return status;
-    }
-    if (absl::Status status = CheckCount(count, cursor_.binary() ? 2 * cursor_.size_t_size() : 4,
-                                         "elements", where[1]);
-        !status.ok()) {
-      return status;
-    }
+    absl::StatusOr<SectionHeader41> header =
+        ReadSectionHeader41("element", cursor_.binary() ? 2 * cursor_.size_t_size() : 4);
+    if (!header.ok()) return header.status();
+    const std::int64_t blocks = header->blocks;
+    const std::int64_t count = header->count;
     if (absl::Status status = BeginElements(count); !status.ok()) return status;
     extras().element_entities.reserve(count);
     std::int64_t read = 0;
