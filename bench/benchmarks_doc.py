@@ -265,7 +265,8 @@ def header(machine):
             f"{machine['cores']} cores, {machine['memory_gb']} GB, {machine['os']}, kernel "
             f"{machine['kernel']}; {machine['compiler']}, CMake build type "
             f"{machine['build_type']}. Load average (1 min) {load[0]:.2f} at the start, "
-            f"{load[1]:.2f} at the end.")
+            f"{load[1]:.2f} at the end."
+            + (f" Scheduling: {machine['scheduling']}." if machine.get("scheduling") else ""))
 
 
 def commands(machine):

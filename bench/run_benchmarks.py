@@ -79,6 +79,18 @@ def output_of(cmd, default=""):
         return default
 
 
+def scheduling_policy():
+    """The run's CPU scheduling, e.g. "SCHED_FIFO priority 10" under `chrt -f 10` (children such
+    as getme-server inherit it): a real-time run keeps other work on the machine off its cores."""
+    policy = os.sched_getscheduler(0)
+    names = {os.SCHED_OTHER: "SCHED_OTHER", os.SCHED_FIFO: "SCHED_FIFO", os.SCHED_RR: "SCHED_RR",
+             os.SCHED_BATCH: "SCHED_BATCH", os.SCHED_IDLE: "SCHED_IDLE"}
+    name = names.get(policy, str(policy))
+    if policy in (os.SCHED_FIFO, os.SCHED_RR):
+        return f"{name} priority {os.sched_getparam(0).sched_priority}"
+    return f"{name} nice {os.nice(0)}"
+
+
 def machine_header(build, mode, repeats, argv):
     cpu = ""
     with open("/proc/cpuinfo") as f:
@@ -113,6 +125,7 @@ def machine_header(build, mode, repeats, argv):
         "compiler": compiler,
         "build_type": build_type,
         "load_average_start": list(os.getloadavg()),
+        "scheduling": scheduling_policy(),
         "command": os.environ.get("GETME_BENCH_COMMAND") or " ".join(shlex.quote(a) for a in argv),
         "driver_commands": [],
     }
@@ -185,7 +198,8 @@ class Runner:
             elements = approximate_elements(size)
             if elements > self.args.max_elements:
                 continue
-            repeats = max(1, min(self.args.repeats, 2_000_000 // elements))
+            # At least 3 repeats (a median) even at 10M elements, where one takes minutes.
+            repeats = max(min(3, self.args.repeats), min(self.args.repeats, 20_000_000 // elements))
             work = self.getme_bench("scaling", [
                 "--generate", f"hybrid --size {size} --seed 1", "--name", f"hybrid-{size}",
                 "--methods", "simultaneous", "--threads", "1,2", "--max-iterations",
