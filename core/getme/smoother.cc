@@ -5,6 +5,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "getme/laplace_smoother.h"
+#include "getme/result_check.h"
 #include "getme/sequential_smoother.h"
 #include "getme/simultaneous_smoother.h"
 #include "getme/smoothing_context.h"
@@ -20,6 +21,17 @@ absl::Status InvalidInput(const MeshQuality& quality) {
       absl::StrCat("the mesh has ", quality.invalid, " invalid (inverted or degenerate) element",
                    quality.invalid == 1 ? "" : "s", ", first: ", absl::StrJoin(listed, ", "),
                    "; enable untangling or repair the mesh"));
+}
+
+// Plain Laplace is quality-unaware (a baseline): inverting elements is what it does, not an
+// engine fault, but its result is still a broken mesh and is not handed out as one.
+absl::Status PlainLaplaceInverted(const MeshQuality& after) {
+  std::vector<std::string> listed;
+  for (ElementId e : after.first_invalid) listed.push_back(absl::StrCat(e));
+  return absl::FailedPreconditionError(
+      absl::StrCat("plain Laplace smoothing inverted ", after.invalid, " element",
+                   after.invalid == 1 ? "" : "s", ", first: ", absl::StrJoin(listed, ", "),
+                   "; it does not check validity: use smart-laplace or getme"));
 }
 
 absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
@@ -87,9 +99,14 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
   result.threads = pool.thread_count();
   result.before = EvaluateMeshQuality(mesh, pool);
   SmoothingContext context(mesh, params, pool, progress, cancel);
+  const ResultCheck check(mesh, context.movable);
   if (auto status = RunPhases(context, result); !status.ok()) return status;
   result.after = EvaluateMeshQuality(mesh, pool);
   result.seconds = context.ElapsedSeconds();
+  if (params.method == Method::kLaplace && result.after.invalid > 0) {
+    return PlainLaplaceInverted(result.after);
+  }
+  if (auto status = check.Check(mesh, result.after); !status.ok()) return status;
   return result;
 }
 

@@ -35,6 +35,10 @@ struct SmoothingResult {
 // Smooths the free nodes of `mesh` in place with params.method. Invalid input is untangled first
 // (params.untangle) or refused with FailedPrecondition naming the first invalid elements.
 // Returns Cancelled if `cancel` fires; the mesh is then left valid (the best state so far).
+// Success means the result passed ResultCheck (result_check.h): valid, fixed nodes bit-identical,
+// finite, `after` its quality; a result failing it is returned as Internal, never as success.
+// Plain Laplace (Method::kLaplace) may invert elements: that is FailedPrecondition, naming them.
+// After any error but Cancelled the mesh holds no result and must not be used.
 absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params,
                                        const ProgressCallback& progress = {},
                                        const CancellationToken* cancel = nullptr);

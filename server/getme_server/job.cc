@@ -129,6 +129,10 @@ void Job::Run() {
     FinishLocked(outcome);
     seconds = absl::ToDoubleSeconds(finished_ - started_);
   }
+  if (outcome.code() == absl::StatusCode::kInternal) {
+    // An engine fault (e.g. the result check refused the mesh): never a silent failure.
+    spdlog::error("job={} phase=result-check error={}", id_, std::string(outcome.message()));
+  }
   final_event.set_elapsed_seconds(seconds);
   final_event.set_final(true);
   Publish(std::move(final_event));
