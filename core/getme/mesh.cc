@@ -14,6 +14,11 @@ namespace getme {
 namespace {
 
 constexpr std::int64_t kMaxIndex = std::numeric_limits<std::int32_t>::max();
+// The mean ratio and the transformation raise lengths to the sixth power (products of squared
+// edge norms); beyond about 1e±51 that under- or overflows and the quality silently reads 0 or 1.
+// These bounds keep a margin of 1e10 on both sides (docs/reliability.md).
+constexpr double kMaxCoordinate = 1e40;
+constexpr double kMinElementExtent = 1e-40;
 
 // Builds CSR rows from (row, item) pairs given row counts; items stay in insertion order.
 template <typename ForEachPair>
@@ -112,6 +117,30 @@ void MeshBuilder::AddElement(ElementType type, std::span<const std::int64_t> nod
   raw_offsets_.push_back(static_cast<std::int64_t>(raw_nodes_.size()));
 }
 
+namespace {
+
+// A degenerate element (all nodes at one point, extent 0) is allowed: it is invalid, which
+// untangling or the caller deals with. A tiny one is not: its quality would underflow to 0.
+absl::Status CheckElementExtent(const Mesh& mesh, std::int64_t element, const std::int64_t* nodes,
+                                int count) {
+  double extent = 0.0;
+  for (int k = 1; k < count; ++k) {
+    extent = std::max({extent, std::abs(mesh.x()[nodes[k]] - mesh.x()[nodes[0]]),
+                       std::abs(mesh.y()[nodes[k]] - mesh.y()[nodes[0]]),
+                       std::abs(mesh.z()[nodes[k]] - mesh.z()[nodes[0]])});
+  }
+  if (extent > 0.0 && extent < kMinElementExtent) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "element ", element, " (", TypeName(mesh.type(static_cast<ElementId>(element))),
+        ") spans only ", extent, ", below ", kMinElementExtent,
+        " where element quality cannot be computed in double precision: rescale the mesh (e.g. "
+        "change its length unit)"));
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
 absl::StatusOr<Mesh> MeshBuilder::Build() && {
   Mesh& mesh = mesh_;
   const std::int64_t node_count = mesh.node_count();
@@ -130,6 +159,14 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
       return absl::InvalidArgumentError(absl::StrCat("node ", i, " has a non-finite coordinate (",
                                                      mesh.x_[i], ", ", mesh.y_[i], ", ", mesh.z_[i],
                                                      ")"));
+    }
+    const double magnitude =
+        std::max({std::abs(mesh.x_[i]), std::abs(mesh.y_[i]), std::abs(mesh.z_[i])});
+    if (magnitude > kMaxCoordinate) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "node ", i, " has a coordinate of magnitude ", magnitude, ", beyond ", kMaxCoordinate,
+          " where element quality cannot be computed in double precision: rescale or translate "
+          "the mesh (e.g. change its length unit)"));
     }
   }
   mesh.fixed_.assign(node_count, 0);
@@ -171,6 +208,9 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
         }
       }
       block.nodes.push_back(static_cast<NodeId>(node));
+    }
+    if (auto status = CheckElementExtent(mesh, e, &raw_nodes_[begin], expected); !status.ok()) {
+      return status;
     }
   }
   raw_nodes_ = {};

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "getme/mesh.h"
+#include "getme/mesh_quality.h"
+#include "getme/thread_pool.h"
 
 namespace getme {
 namespace {
@@ -163,6 +165,61 @@ TEST(MeshBuilderErrors, FixedNodeIdEqualToNodeCountIsOutOfRange) {
   const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
   ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(Message(mesh), AllOf(HasSubstr("fixed node id 8"), HasSubstr("out of range")));
+}
+
+}  // namespace
+}  // namespace getme
+
+namespace getme {
+namespace {
+
+// A slightly skewed hexahedron (q < 1) scaled by `scale`, as a one-element mesh.
+absl::StatusOr<Mesh> ScaledHex(double scale, double offset = 0.0) {
+  MeshBuilder builder;
+  const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1.2, 1, 0}, {0, 1, 0},
+                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1.3}, {0, 1, 1}};
+  for (const auto& c : corners) {
+    builder.AddNode(c[0] * scale + offset, c[1] * scale + offset, c[2] * scale + offset);
+  }
+  const std::vector<std::int64_t> nodes = {0, 1, 2, 3, 4, 5, 6, 7};
+  builder.AddElement(ElementType::kHexahedron, nodes);
+  return std::move(builder).Build();
+}
+
+TEST(MeshBuilderErrors, ACoordinateBeyondTheComputableRangeNamesTheNode) {
+  const absl::StatusOr<Mesh> mesh = ScaledHex(1.0, -1e41);
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), HasSubstr("node 0 has a coordinate of magnitude 1e+41, beyond 1e+40"));
+  EXPECT_THAT(Message(mesh), HasSubstr("rescale or translate the mesh"));
+}
+
+TEST(MeshBuilderErrors, AnElementTooSmallToEvaluateNamesTheElement) {
+  const absl::StatusOr<Mesh> mesh = ScaledHex(1e-41);
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), HasSubstr("element 0 (hexahedron) spans only 1.3e-41, below 1e-40"));
+}
+
+TEST(MeshBuilderErrors, ACollapsedElementIsAcceptedAsInvalidNotRefused) {
+  const absl::StatusOr<Mesh> mesh = ScaledHex(0.0, 5.0);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  ThreadPool pool(1);
+  EXPECT_EQ(EvaluateMeshQuality(*mesh, pool).invalid, 1);
+}
+
+// The accepted range is one where the mean ratio is still scale-invariant (beyond about 1e±51 it
+// silently read 1 or 0 before the bounds existed): near the bounds it equals the unit-scale value.
+TEST(MeshBuilderErrors, QualityIsScaleInvariantAcrossTheAcceptedRange) {
+  ThreadPool pool(1);
+  const absl::StatusOr<Mesh> unit = ScaledHex(1.0);
+  ASSERT_TRUE(unit.ok());
+  const double q = EvaluateMeshQuality(*unit, pool).q_min;
+  ASSERT_GT(q, 0.5);
+  ASSERT_LT(q, 0.99);
+  for (double scale : {1e-39, 1e-20, 1e20, 1e39}) {
+    const absl::StatusOr<Mesh> scaled = ScaledHex(scale);
+    ASSERT_TRUE(scaled.ok()) << scale << ": " << scaled.status();
+    EXPECT_NEAR(EvaluateMeshQuality(*scaled, pool).q_min, q, 1e-12) << scale;
+  }
 }
 
 }  // namespace
