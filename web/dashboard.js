@@ -96,12 +96,15 @@ function select(id) {
 
 function openEvents(job) {
   // EventSource reconnects by itself after a dropped connection (the server asks for 2 s); the
-  // stream then starts again from the job's latest event.
+  // stream then starts again from the job's latest event. Events that arrive while the trace
+  // (the run so far) loads wait in `pending`, so no event falls between the two.
+  job.pending = [];
   const events = new EventSource(`/v1/jobs/${job.id}/events`);
   job.events = events;
   events.addEventListener('progress', (message) => {
     const event = JSON.parse(message.data);
-    addPoint(job, event);
+    if (job.pending) job.pending.push(event);
+    else addPoint(job, event);
   });
   events.addEventListener('result', (message) => {
     drawHistogram(JSON.parse(message.data));
@@ -120,15 +123,32 @@ function openEvents(job) {
       $('job-summary').textContent = 'Lost the event stream (job unknown or server gone).';
     }
   };
+  loadTrace(job);
+}
+
+async function loadTrace(job) {
+  let trace = [];
+  try {
+    const response = await fetch(`/v1/jobs/${job.id}/trace`);
+    if (response.ok) trace = (await response.json()).events || [];
+  } catch (error) {
+    // The stream alone still draws from now on.
+  }
+  const pending = job.pending;
+  job.pending = null;
+  for (const event of [...trace, ...pending]) addPoint(job, event);
 }
 
 function addPoint(job, event) {
   if (job !== selected || !event.phase || event.phase === 'PHASE_UNSPECIFIED') return;
+  const sequence = Number(event.sequence);
+  if (sequence <= (job.lastSequence || 0)) return;
+  job.lastSequence = sequence;
   const point = {
     phase: event.phase, iteration: Number(event.iteration), qMin: event.qMin, qMean: event.qMean,
   };
   const last = job.points[job.points.length - 1];
-  // A reconnect or the final event repeats the latest state: keep one point per state.
+  // The final event repeats the latest state: keep one point per state.
   if (last && last.phase === point.phase && last.iteration === point.iteration) return;
   job.points.push(point);
   if (!drawQueued) {
@@ -198,8 +218,9 @@ function draw() {
       x: x0, y: top, width: bandWidth, height: plotHeight,
       fill: PHASE_COLOURS[index % PHASE_COLOURS.length], class: 'phase', 'data-phase': phase.name,
     }));
+    const label = PHASE_NAMES[phase.name] || phase.name;
     children.push(svgElement('text', { x: x0 + 4, y: height - 8 },
-      `${PHASE_NAMES[phase.name] || phase.name} (${first}…${first + span})`));
+      bandWidth > 160 ? `${label} (${first}…${first + span})` : label));
     if (index > 0) {
       children.push(svgElement('line', { x1: x0, x2: x0, y1: top, y2: top + plotHeight, stroke: '#99a', 'stroke-dasharray': '4 3' }));
     }

@@ -6,6 +6,7 @@
 
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
 #include "absl/time/clock.h"
 #include "getme_server/dashboard_assets.h"
 #include "getme_server/http_json.h"
@@ -30,7 +31,7 @@ constexpr absl::Duration kStreamPoll = absl::Milliseconds(100);
 constexpr absl::Duration kStreamKeepAlive = absl::Seconds(2);
 
 const char kJson[] = "application/json";
-const std::regex kJobPath(R"(/v1/jobs/([^/:]+)(:cancel|/events|/report)?)");
+const std::regex kJobPath(R"(/v1/jobs/([^/:]+)(:cancel|/events|/report|/trace)?)");
 
 void ReplyError(httplib::Response& res, const absl::Status& status) {
   res.status = HttpStatusFromCode(status.code());
@@ -146,9 +147,12 @@ absl::Status HttpGateway::Start(const std::string& address) {
     return absl::UnavailableError(absl::StrCat("cannot listen on '", address,
                                                "' for HTTP (address in use or unknown host?)"));
   }
-  listener_ = std::thread([this] { http_->listen_after_bind(); });
+  listener_ = std::thread([this] {
+    http_->listen_after_bind();
+    listener_done_.store(true);
+  });
   // httplib's stop() does nothing before the accept loop runs: wait for it, so Stop never hangs.
-  while (!http_->is_running()) absl::SleepFor(absl::Milliseconds(1));
+  while (!http_->is_running() && !listener_done_.load()) absl::SleepFor(absl::Milliseconds(1));
   return absl::OkStatus();
 }
 
@@ -265,6 +269,16 @@ void HttpGateway::AddRoutes() {
     }
     ReplyJson(res, *summary);
   });
+  http_->Get(
+      R"(/v1/jobs/([^/:]+)/trace)", [this](const httplib::Request& req, httplib::Response& res) {
+        absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);
+        if (!job.ok()) return ReplyError(res, job.status());
+        std::vector<std::string> events;
+        for (const v1::ProgressEvent& event : (*job)->Trace()) {
+          events.push_back(ToJson(event));
+        }
+        res.set_content(absl::StrCat("{\"events\":[", absl::StrJoin(events, ","), "]}"), kJson);
+      });
   http_->Get(R"(/v1/jobs/([^/:]+)/events)",
              [this](const httplib::Request& req, httplib::Response& res) {
                absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);

@@ -40,6 +40,7 @@ class HttpGateway {
   ServerMetrics& metrics_;
   std::unique_ptr<httplib::Server> http_;
   std::thread listener_;
+  std::atomic<bool> listener_done_{false};
   std::atomic<bool> stopping_{false};
   std::atomic<int> open_streams_{0};
   int port_ = 0;

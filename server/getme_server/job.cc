@@ -49,6 +49,7 @@ void Job::Publish(v1::ProgressEvent event) {
   event.set_sequence(++sequence_);
   if (!event.final()) CountElementIterationsLocked(event);
   latest_ = event;
+  RecordTraceLocked(event);
   fanout_.Publish(event);
 }
 
@@ -206,6 +207,23 @@ bool Job::final() const {
 absl::Status Job::outcome() const {
   std::lock_guard lock(mutex_);
   return outcome_;
+}
+
+void Job::RecordTraceLocked(const v1::ProgressEvent& event) {
+  const bool must_keep = event.phase_done() || event.final();
+  if (!must_keep && event.sequence() % trace_stride_ != 0) return;
+  trace_.push_back(event);
+  if (trace_.size() < kMaxTrace) return;
+  // Full: keep every other intermediate event from now on, and thin the past to match.
+  trace_stride_ *= 2;
+  std::erase_if(trace_, [this](const v1::ProgressEvent& e) {
+    return !e.phase_done() && !e.final() && e.sequence() % trace_stride_ != 0;
+  });
+}
+
+std::vector<v1::ProgressEvent> Job::Trace() const {
+  std::lock_guard lock(mutex_);
+  return trace_;
 }
 
 std::optional<v1::SmoothResult> Job::Summary() const {

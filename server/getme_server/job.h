@@ -5,6 +5,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
@@ -54,6 +55,10 @@ class Job {
   // The summary of a SUCCEEDED job (quality before/after with histograms, phases), kept after
   // the result itself was fetched or expired; nullopt for other states.
   std::optional<v1::SmoothResult> Summary() const;
+  // The job's events so far, thinned to at most about kMaxTrace (every phase_done and the final
+  // event kept), so a dashboard opened late or reloaded can draw the whole run.
+  std::vector<v1::ProgressEvent> Trace() const;
+  static constexpr std::size_t kMaxTrace = 1000;
   // Element transforms per second since the job started running (0 unless RUNNING): a
   // simultaneous-type iteration transforms every element, a sequential pick one.
   double ElementIterationRate() const;
@@ -69,6 +74,7 @@ class Job {
   void Publish(v1::ProgressEvent event);  // stamps job id and sequence
   void FinishLocked(absl::Status outcome);
   void CountElementIterationsLocked(const v1::ProgressEvent& event);
+  void RecordTraceLocked(const v1::ProgressEvent& event);
 
   const std::string id_;
   const SmoothingParams params_;
@@ -89,6 +95,8 @@ class Job {
   std::uint64_t sequence_ = 0;
   std::uint64_t element_iterations_ = 0;
   std::optional<v1::SmoothResult> summary_;
+  std::vector<v1::ProgressEvent> trace_;
+  std::uint64_t trace_stride_ = 1;  // keep every trace_stride_-th intermediate event
   bool result_taken_ = false;
   bool result_expired_ = false;
   std::unique_ptr<JobResult> result_;  // input mesh while queued/running, result once SUCCEEDED

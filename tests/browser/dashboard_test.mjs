@@ -127,6 +127,9 @@ try {
   await page.click(`tr[data-job-id="${first}"]`);
   await page.waitForSelector('#histogram[data-ready="true"]');
   check('after a reload a finished job shows its histogram again', true);
+  await page.waitForFunction((n) => Number(document.getElementById('chart').dataset.points) >= n,
+    later);
+  check('after a reload its chart is drawn from the start (trace)', true);
   await page.screenshot({ path: path.join(outputDir, 'dashboard-reloaded.png'), fullPage: true });
 } catch (error) {
   check('browser run', false, error.stack || String(error));

@@ -10,6 +10,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "getme_server/job.h"
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 #include "http_test_support.h"
@@ -23,6 +24,20 @@ v1::SmoothingParameters SimultaneousOnly() {
   parameters.set_simultaneous_tolerance(0);  // every one of the max iterations runs
   parameters.set_simultaneous_max_iterations(60);
   return parameters;
+}
+
+// The events of GET /v1/jobs/{id}/trace ({"events": [...]}), each as its JSON text.
+std::vector<SseEvent> TraceEvents(const std::string& body) {
+  std::vector<SseEvent> events;
+  std::size_t at = body.find('[');
+  int depth = 0;
+  std::size_t start = 0;
+  for (std::size_t i = at + 1; at != std::string::npos && i < body.size(); ++i) {
+    if (body[i] == '{' && depth++ == 0) start = i;
+    if (body[i] == '}' && --depth == 0)
+      events.push_back({"trace", body.substr(start, i - start + 1)});
+  }
+  return events;
 }
 
 std::string PostJob(HttpTestServer& test, const v1::Mesh& mesh,
@@ -75,6 +90,15 @@ TEST(HttpEventsTest, StreamCarriesEveryProgressEventInOrderThenResultThenEnd) {
   const auto end = ParseJson<v1::Job>(events.back().data);
   EXPECT_EQ(end.state(), v1::JOB_STATE_SUCCEEDED);
 
+  // The trace has the whole run (fewer than Job::kMaxTrace events here, so none thinned out).
+  const HttpReply trace = HttpGet(*test.http, "/v1/jobs/" + id + "/trace");
+  ASSERT_EQ(trace.status, 200);
+  const std::vector<SseEvent> as_events = TraceEvents(trace.body);
+  ASSERT_EQ(as_events.size(), events.size() - 2);
+  for (std::size_t i = 0; i < as_events.size(); ++i) {
+    EXPECT_EQ(ParseJson<v1::ProgressEvent>(as_events[i].data).sequence(), i + 1);
+  }
+
   // Reconnecting to a finished job replays its final event, result and end (page reloads).
   const std::vector<SseEvent> again = ReadEventStream(*test.http, id);
   ASSERT_EQ(again.size(), 3u);
@@ -98,6 +122,19 @@ TEST(HttpEventsTest, CancelledJobStreamEndsWithCancelledAndNoResult) {
   EXPECT_EQ(ParseJson<v1::Job>(events.back().data).state(), v1::JOB_STATE_CANCELLED);
   EXPECT_TRUE(ParseJson<v1::ProgressEvent>(events[events.size() - 2].data).final());
   for (const SseEvent& event : events) EXPECT_NE(event.name, "result");
+
+  // Thousands of events (one per 200 picks): the trace is thinned, keeps order and the end.
+  const auto trace = TraceEvents(HttpGet(*test.http, "/v1/jobs/" + id + "/trace").body);
+  const auto last = ParseJson<v1::ProgressEvent>(events[events.size() - 2].data);
+  ASSERT_FALSE(trace.empty());
+  EXPECT_LE(trace.size(), Job::kMaxTrace);
+  EXPECT_EQ(ParseJson<v1::ProgressEvent>(trace.back().data).sequence(), last.sequence());
+  std::uint64_t previous = 0;
+  for (const SseEvent& event : trace) {
+    const std::uint64_t sequence = ParseJson<v1::ProgressEvent>(event.data).sequence();
+    EXPECT_GT(sequence, previous);
+    previous = sequence;
+  }
 }
 
 // Opens an event stream on a raw socket and never reads from it.
