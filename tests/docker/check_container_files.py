@@ -69,29 +69,37 @@ def apt_packages(instructions):
     return packages
 
 
-def owning_package(library):
-    """The Debian package that ships `library`, trying the paths dpkg may know it by (usrmerge:
-    /lib is /usr/lib, and ldd may report a symlink)."""
-    real = os.path.realpath(library)
-    candidates = []
-    for path in (library, real):
-        candidates.append(path)
+def path_variants(library):
+    """The paths dpkg may know a library by (usrmerge: /lib is /usr/lib, and ldd may report a
+    symlink)."""
+    variants = []
+    for path in (library, os.path.realpath(library)):
+        variants.append(path)
         if path.startswith("/usr/lib/"):
-            candidates.append(path[len("/usr"):])
+            variants.append(path[len("/usr"):])
         elif path.startswith("/lib"):
-            candidates.append("/usr" + path)
-    for path in candidates:
-        result = subprocess.run(["dpkg", "-S", path], capture_output=True, text=True)
-        if result.returncode == 0:
-            return result.stdout.split(":")[0].strip()
-    return None
+            variants.append("/usr" + path)
+    return variants
+
+
+def owning_packages(libraries):
+    """{library: Debian package or None}, with one `dpkg -S` call for all (it is slow to start)."""
+    candidates = sorted({v for library in libraries for v in path_variants(library)})
+    result = subprocess.run(["dpkg", "-S", *candidates], capture_output=True, text=True)
+    by_path = {}
+    for line in result.stdout.splitlines():
+        packages, _, path = line.rpartition(": ")
+        by_path[path.strip()] = packages.split(",")[0].split(":")[0].strip()
+    return {library: next((by_path[v] for v in path_variants(library) if v in by_path), None)
+            for library in libraries}
 
 
 def shared_libraries(binary):
     output = subprocess.run(["ldd", binary], capture_output=True, text=True, check=True).stdout
     libraries = []
     for line in output.splitlines():
-        check("not found" not in line, f"{os.path.basename(binary)}: {line.strip()}")
+        if "not found" in line:
+            check(False, f"{os.path.basename(binary)}: {line.strip()}")
         match = re.search(r"=>\s*(/\S+)", line) or re.match(r"\s*(/\S+)", line)
         if match:
             libraries.append(match.group(1))
@@ -118,12 +126,17 @@ def main(argv):
     for binary in binaries:
         name = os.path.basename(binary)
         check(f"/src/build/bin/{name}" in copied, f"the runtime stage copies build/bin/{name}")
-        for library in shared_libraries(binary):
-            package = owning_package(library)
-            if sanitizer_build and package in SANITIZER_PACKAGES:
-                continue
-            check(package in packages,
-                  f"{name}: {library} comes from {package}, installed in the runtime stage")
+        needed = {}
+        for library, package in owning_packages(shared_libraries(binary)).items():
+            if not (sanitizer_build and package in SANITIZER_PACKAGES):
+                needed.setdefault(package, []).append(library)
+        for package, libraries in sorted(needed.items(), key=lambda item: str(item[0])):
+            if package not in packages:
+                check(False, f"{name}: {', '.join(libraries)} come(s) from {package}, which the "
+                             "runtime stage does not install")
+        check(all(p in packages for p in needed),
+              f"{name}: all {sum(map(len, needed.values()))} shared libraries come from the "
+              f"runtime stage's packages ({', '.join(sorted(map(str, needed)))})")
 
     users = [a for i, a in runtime_instructions if i == "USER"]
     check(users and users[-1].split(":")[0] not in ("root", "0"), "the runtime stage is not root")
