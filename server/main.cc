@@ -1,7 +1,9 @@
-// getme-server: the getme.v1.Smoother gRPC service (plus grpc.health.v1 and server reflection).
+// getme-server: the getme.v1.Smoother gRPC service (plus grpc.health.v1 and server reflection),
+// and an HTTP gateway with a live dashboard over the same jobs (--http_listen).
 #include <pthread.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -18,6 +20,10 @@
 
 ABSL_FLAG(std::string, listen, "127.0.0.1:50051",
           "host:port to listen on (plaintext gRPC); port 0 picks a free port");
+ABSL_FLAG(std::string, http_listen, "127.0.0.1:8080",
+          "host:port of the HTTP gateway: dashboard at /, JSON jobs API under /v1/jobs, /healthz, "
+          "/readyz, /metrics (docs/http.md); empty = no HTTP; port 0 picks a free port. When this "
+          "default is busy the server warns and serves gRPC only; an address given here must bind");
 ABSL_FLAG(int, workers, 2, "jobs smoothed at the same time (worker threads)");
 ABSL_FLAG(int, threads_per_job, 1,
           "engine threads per job when the request leaves SmoothingParameters.threads unset; "
@@ -38,7 +44,8 @@ int main(int argc, char** argv) {
   absl::SetProgramUsageMessage(
       "getme-server [flags]: serves GETMe mesh smoothing over gRPC (service getme.v1.Smoother, "
       "see proto/getme/v1/smoother.proto), with grpc.health.v1 health checking and server "
-      "reflection. SIGTERM or SIGINT drains it: no new jobs, running jobs may finish within "
+      "reflection, and an HTTP/JSON gateway with a live dashboard (--http_listen). SIGTERM or "
+      "SIGINT drains it: no new jobs, running jobs may finish within "
       "--shutdown_grace, queued ones are cancelled, exit code 0.");
   // --help lists this file's flags (Abseil's default looks for a file named after the binary).
   absl::FlagsUsageConfig usage_config;
@@ -47,6 +54,10 @@ int main(int argc, char** argv) {
   };
   usage_config.contains_helpshort_flags = usage_config.contains_help_flags;
   absl::SetFlagsUsageConfig(usage_config);
+  // Abseil does not tell whether a flag was given; its default may be busy, a given one must work.
+  const bool http_listen_given = std::any_of(argv + 1, argv + argc, [](const char* arg) {
+    return absl::StartsWith(arg, "--http_listen") || absl::StartsWith(arg, "-http_listen");
+  });
   absl::ParseCommandLine(argc, argv);
   spdlog::set_default_logger(spdlog::stderr_logger_mt("getme-server"));
 
@@ -60,6 +71,8 @@ int main(int argc, char** argv) {
 
   getme::server::ServerOptions options;
   options.listen = absl::GetFlag(FLAGS_listen);
+  options.http_listen = absl::GetFlag(FLAGS_http_listen);
+  options.http_listen_optional = !http_listen_given;
   options.workers = absl::GetFlag(FLAGS_workers);
   options.threads_per_job = absl::GetFlag(FLAGS_threads_per_job);
   options.max_queued_jobs = absl::GetFlag(FLAGS_max_queued_jobs);

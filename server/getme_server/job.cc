@@ -28,12 +28,13 @@ const char* StateName(v1::JobState state) {
 }  // namespace
 
 Job::Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
-         v1::ResultOptions options, absl::Duration progress_interval)
+         v1::ResultOptions options, absl::Duration progress_interval, ServerMetrics* metrics)
     : id_(std::move(id)),
       params_(params),
       nodes_(static_cast<std::uint64_t>(mesh.node_count())),
       elements_(static_cast<std::uint64_t>(mesh.element_count())),
       created_(absl::Now()),
+      metrics_(metrics),
       fanout_(progress_interval),
       result_(std::make_unique<JobResult>()) {
   topology.clear_coordinates();  // the smoothed mesh replaces them
@@ -46,7 +47,9 @@ void Job::Publish(v1::ProgressEvent event) {
   std::lock_guard lock(mutex_);
   event.set_job_id(id_);
   event.set_sequence(++sequence_);
+  if (!event.final()) CountElementIterationsLocked(event);
   latest_ = event;
+  RecordTraceLocked(event);
   fanout_.Publish(event);
 }
 
@@ -141,15 +144,32 @@ void Job::Run() {
                outcome.ok() ? "" : " error=", outcome.ok() ? "" : std::string(outcome.message()));
 }
 
+void Job::CountElementIterationsLocked(const v1::ProgressEvent& event) {
+  const bool same_phase = latest_.has_value() && latest_->phase() == event.phase() &&
+                          !latest_->phase_done() && !latest_->final();
+  const std::int64_t before = same_phase ? latest_->iteration() : 0;
+  if (event.iteration() <= before) return;
+  const bool picks = event.phase() == v1::PHASE_SEQUENTIAL || event.phase() == v1::PHASE_WARPAGE;
+  const std::uint64_t count =
+      static_cast<std::uint64_t>(event.iteration() - before) * (picks ? 1 : elements_);
+  element_iterations_ += count;
+  if (metrics_ != nullptr) metrics_->AddElementIterations(count);
+}
+
 void Job::FinishLocked(absl::Status outcome) {
   finished_ = absl::Now();
   outcome_ = std::move(outcome);
   if (outcome_.ok()) {
     state_ = v1::JOB_STATE_SUCCEEDED;
+    summary_ = result_->summary;
   } else {
     state_ = outcome_.code() == absl::StatusCode::kCancelled ? v1::JOB_STATE_CANCELLED
                                                              : v1::JOB_STATE_FAILED;
     result_.reset();
+  }
+  if (metrics_ != nullptr) {
+    const bool ran = started_ != absl::InfinitePast();
+    metrics_->CountFinishedJob(state_, ran ? absl::ToDoubleSeconds(finished_ - started_) : -1.0);
   }
 }
 
@@ -191,6 +211,35 @@ bool Job::final() const {
 absl::Status Job::outcome() const {
   std::lock_guard lock(mutex_);
   return outcome_;
+}
+
+void Job::RecordTraceLocked(const v1::ProgressEvent& event) {
+  const bool must_keep = event.phase_done() || event.final();
+  if (!must_keep && event.sequence() % trace_stride_ != 0) return;
+  trace_.push_back(event);
+  if (trace_.size() < kMaxTrace) return;
+  // Full: keep every other intermediate event from now on, and thin the past to match.
+  trace_stride_ *= 2;
+  std::erase_if(trace_, [this](const v1::ProgressEvent& e) {
+    return !e.phase_done() && !e.final() && e.sequence() % trace_stride_ != 0;
+  });
+}
+
+std::vector<v1::ProgressEvent> Job::Trace() const {
+  std::lock_guard lock(mutex_);
+  return trace_;
+}
+
+std::optional<v1::SmoothResult> Job::Summary() const {
+  std::lock_guard lock(mutex_);
+  return summary_;
+}
+
+double Job::ElementIterationRate() const {
+  std::lock_guard lock(mutex_);
+  if (state_ != v1::JOB_STATE_RUNNING) return 0.0;
+  const double seconds = absl::ToDoubleSeconds(absl::Now() - started_);
+  return seconds > 0 ? static_cast<double>(element_iterations_) / seconds : 0.0;
 }
 
 v1::Job Job::Describe() const {

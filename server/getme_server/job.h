@@ -5,6 +5,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
@@ -14,6 +15,7 @@
 #include "getme/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
 #include "getme_server/progress_fanout.h"
+#include "getme_server/server_metrics.h"
 
 namespace getme::server {
 
@@ -31,8 +33,10 @@ struct JobResult {
 // handlers watching it.
 class Job {
  public:
+  // `metrics` (may be null) counts the job's work and outcome; it must outlive the job.
   Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
-      v1::ResultOptions options, absl::Duration progress_interval);
+      v1::ResultOptions options, absl::Duration progress_interval,
+      ServerMetrics* metrics = nullptr);
 
   const std::string& id() const { return id_; }
 
@@ -48,6 +52,16 @@ class Job {
   std::shared_ptr<ProgressFanout::Watcher> Watch() { return fanout_.Watch(); }
   // The job's outcome: OK for SUCCEEDED, else the status it failed or was cancelled with.
   absl::Status outcome() const;
+  // The summary of a SUCCEEDED job (quality before/after with histograms, phases), kept after
+  // the result itself was fetched or expired; nullopt for other states.
+  std::optional<v1::SmoothResult> Summary() const;
+  // The job's events so far, thinned to at most about kMaxTrace (every phase_done and the final
+  // event kept), so a dashboard opened late or reloaded can draw the whole run.
+  std::vector<v1::ProgressEvent> Trace() const;
+  static constexpr std::size_t kMaxTrace = 1000;
+  // Element transforms per second since the job started running (0 unless RUNNING): a
+  // simultaneous-type iteration transforms every element, a sequential pick one.
+  double ElementIterationRate() const;
 
   // Hands the result out once. FAILED/CANCELLED jobs give their outcome, unfinished ones
   // FAILED_PRECONDITION, fetched or expired results NOT_FOUND.
@@ -59,12 +73,15 @@ class Job {
  private:
   void Publish(v1::ProgressEvent event);  // stamps job id and sequence
   void FinishLocked(absl::Status outcome);
+  void CountElementIterationsLocked(const v1::ProgressEvent& event);
+  void RecordTraceLocked(const v1::ProgressEvent& event);
 
   const std::string id_;
   const SmoothingParams params_;
   const std::uint64_t nodes_;
   const std::uint64_t elements_;
   const absl::Time created_;
+  ServerMetrics* const metrics_;
   CancellationToken cancel_;
   ProgressFanout fanout_;
 
@@ -76,6 +93,10 @@ class Job {
   std::string cancel_reason_;
   std::optional<v1::ProgressEvent> latest_;
   std::uint64_t sequence_ = 0;
+  std::uint64_t element_iterations_ = 0;
+  std::optional<v1::SmoothResult> summary_;
+  std::vector<v1::ProgressEvent> trace_;
+  std::uint64_t trace_stride_ = 1;  // keep every trace_stride_-th intermediate event
   bool result_taken_ = false;
   bool result_expired_ = false;
   std::unique_ptr<JobResult> result_;  // input mesh while queued/running, result once SUCCEEDED

@@ -74,6 +74,16 @@ std::vector<std::shared_ptr<Job>> JobRegistry::List() const {
   return {submission_order_.rbegin(), submission_order_.rend()};
 }
 
+std::int64_t JobRegistry::QueuedCount() const {
+  std::lock_guard lock(mutex_);
+  return QueuedCountLocked();
+}
+
+bool JobRegistry::accepting() const {
+  std::lock_guard lock(mutex_);
+  return accepting_;
+}
+
 std::shared_ptr<Job> JobRegistry::TakeNextQueued() {
   std::unique_lock lock(mutex_);
   while (true) {

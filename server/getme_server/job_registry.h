@@ -33,6 +33,8 @@ class JobRegistry {
   // NOT_FOUND for ids the registry does not know (never issued, or forgotten after the TTL).
   absl::StatusOr<std::shared_ptr<Job>> Find(const std::string& id) const;
   std::vector<std::shared_ptr<Job>> List() const;  // newest first
+  std::int64_t QueuedCount() const;                // jobs waiting for a worker
+  bool accepting() const;                          // false once shutdown started
 
   // Blocks until a queued job is available (returned) or the workers are stopped (nullptr).
   std::shared_ptr<Job> TakeNextQueued();

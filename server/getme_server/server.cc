@@ -6,7 +6,10 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "getme_server/http_gateway.h"
 #include "getme_server/job_registry.h"
+#include "getme_server/rpc_metrics_interceptor.h"
+#include "getme_server/server_metrics.h"
 #include "getme_server/smoother_service.h"
 #include "getme_server/worker_pool.h"
 #include "grpcpp/ext/proto_server_reflection_plugin.h"
@@ -46,7 +49,7 @@ class SmootherServerImpl final : public SmootherServer {
   explicit SmootherServerImpl(const ServerOptions& options)
       : registry_(options.max_queued_jobs, options.result_ttl),
         workers_(registry_, options.workers),
-        service_(registry_, options) {}
+        service_(registry_, options, &metrics_) {}
 
   ~SmootherServerImpl() override { Shutdown(absl::ZeroDuration()); }
 
@@ -57,6 +60,9 @@ class SmootherServerImpl final : public SmootherServer {
     builder.AddListeningPort(address, grpc::InsecureServerCredentials(), &port_);
     builder.SetMaxReceiveMessageSize(kMaxReceiveMessageBytes);
     builder.RegisterService(&service_);
+    std::vector<std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>> counters;
+    counters.push_back(RpcMetricsInterceptor(metrics_));
+    builder.experimental().SetInterceptorCreators(std::move(counters));
     server_ = builder.BuildAndStart();
     if (server_ == nullptr || port_ == 0) {
       return absl::UnavailableError(absl::StrCat("cannot listen on '", address,
@@ -67,7 +73,23 @@ class SmootherServerImpl final : public SmootherServer {
     return absl::OkStatus();
   }
 
+  // After Listen: the gateway serves the registry the gRPC service already works on.
+  absl::Status ListenHttp(const ServerOptions& options) {
+    if (options.http_listen.empty()) return absl::OkStatus();
+    auto gateway = std::make_unique<HttpGateway>(registry_, options, metrics_);
+    absl::Status status = gateway->Start(options.http_listen);
+    if (!status.ok()) {
+      if (!options.http_listen_optional) return status;
+      spdlog::warn("{}; serving gRPC only (pass --http_listen to choose another address)",
+                   std::string(status.message()));
+      return absl::OkStatus();
+    }
+    http_ = std::move(gateway);
+    return absl::OkStatus();
+  }
+
   int port() const override { return port_; }
+  int http_port() const override { return http_ == nullptr ? 0 : http_->port(); }
 
   void Shutdown(absl::Duration grace) override {
     std::unique_lock lock(mutex_);
@@ -110,14 +132,18 @@ class SmootherServerImpl final : public SmootherServer {
     workers_.Join();
     stop_calls.join();
     if (server_ != nullptr) server_->Wait();
+    // Last, so that /readyz answered "draining" and event streams saw their jobs' final events.
+    if (http_ != nullptr) http_->Stop();
     spdlog::info("shutdown complete");
   }
 
+  ServerMetrics metrics_;  // before the registry: jobs count into it until they are destroyed
   JobRegistry registry_;
   WorkerPool workers_;
   SmootherService service_;
   std::unique_ptr<grpc::Server> server_;
   int port_ = 0;
+  std::unique_ptr<HttpGateway> http_;  // null when off
 
   std::mutex mutex_;
   std::condition_variable shutdown_done_cv_;
@@ -132,11 +158,19 @@ absl::StatusOr<std::unique_ptr<SmootherServer>> SmootherServer::Start(
   if (auto s = CheckOptions(options); !s.ok()) return s;
   auto server = std::make_unique<SmootherServerImpl>(options);
   if (auto s = server->Listen(options.listen); !s.ok()) return s;
+  if (auto s = server->ListenHttp(options); !s.ok()) return s;
   spdlog::info(
       "getme-server listening on port {} (workers={} threads_per_job={} "
       "max_queued_jobs={} max_elements={} result_ttl={})",
       server->port(), options.workers, options.threads_per_job, options.max_queued_jobs,
       options.max_elements, absl::FormatDuration(options.result_ttl));
+  if (server->http_port() != 0) {
+    // Not "listening on port": scripts find the gRPC port by that phrase.
+    spdlog::info("HTTP gateway and dashboard at http://{}/ (port {})",
+                 options.http_listen.substr(0, options.http_listen.rfind(':')) + ":" +
+                     std::to_string(server->http_port()),
+                 server->http_port());
+  }
   return server;
 }
 

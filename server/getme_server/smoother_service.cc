@@ -8,8 +8,8 @@
 #include "absl/time/clock.h"
 #include "getme/mesh_quality.h"
 #include "getme/thread_pool.h"
+#include "getme_server/job_submission.h"
 #include "getme_server/mesh_conversion.h"
-#include "getme_server/params_conversion.h"
 #include "getme_server/report_conversion.h"
 #include "getme_server/status_mapping.h"
 #include "spdlog/spdlog.h"
@@ -20,18 +20,11 @@ namespace {
 // How often a handler waiting for progress checks whether its client is still there: a cancelled
 // call or a passed deadline then cancels the job, which stops within one engine iteration.
 constexpr absl::Duration kClientPollInterval = absl::Milliseconds(50);
-constexpr std::uint32_t kMaxHistogramBins = 10'000;
 
 template <typename Header>
 absl::Status CheckHeader(const Header& header, std::int64_t max_elements) {
   if (header.has_expected_size()) return CheckDeclaredSize(header.expected_size(), max_elements);
   return absl::OkStatus();
-}
-
-absl::Status CheckHistogramBins(std::uint32_t bins, const char* field) {
-  if (bins <= kMaxHistogramBins) return absl::OkStatus();
-  return absl::InvalidArgumentError(absl::StrCat(
-      field, " = ", bins, " is out of range: must be in [0, ", kMaxHistogramBins, "] (0 = 20)"));
 }
 
 // Reads an upload stream: an optional header first, then mesh chunks. A missing header means
@@ -121,18 +114,7 @@ grpc::Status StreamResult(JobResult& result, Writer* writer) {
 
 absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::SmoothHeader& header,
                                                                 v1::Mesh mesh) {
-  absl::StatusOr<SmoothingParams> params =
-      ToEngineParams(header.parameters(), options_.threads_per_job);
-  if (!params.ok()) return params.status();
-  if (auto s = CheckHistogramBins(header.result_options().histogram_bins(),
-                                  "result_options.histogram_bins");
-      !s.ok()) {
-    return s;
-  }
-  absl::StatusOr<Mesh> engine_mesh = ToEngineMesh(mesh, options_.max_elements);
-  if (!engine_mesh.ok()) return engine_mesh.status();
-  return std::make_shared<Job>(registry_.NewJobId(), std::move(mesh), *std::move(engine_mesh),
-                               *params, header.result_options(), options_.progress_interval);
+  return server::CreateJob(header, std::move(mesh), registry_, options_, metrics_);
 }
 
 grpc::Status SmootherService::Smooth(

@@ -2,6 +2,7 @@
 
 #include "getme/v1/smoother.grpc.pb.h"
 #include "getme_server/job_registry.h"
+#include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
 
 namespace getme::server {
@@ -10,8 +11,8 @@ namespace getme::server {
 // types and back, and leave queueing, running and progress fan-out to the registry and jobs.
 class SmootherService final : public v1::Smoother::Service {
  public:
-  SmootherService(JobRegistry& registry, const ServerOptions& options)
-      : registry_(registry), options_(options) {}
+  SmootherService(JobRegistry& registry, const ServerOptions& options, ServerMetrics* metrics)
+      : registry_(registry), options_(options), metrics_(metrics) {}
 
   grpc::Status Smooth(
       grpc::ServerContext* context,
@@ -37,6 +38,7 @@ class SmootherService final : public v1::Smoother::Service {
 
   JobRegistry& registry_;
   const ServerOptions options_;
+  ServerMetrics* const metrics_;
 };
 
 }  // namespace getme::server

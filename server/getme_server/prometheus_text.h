@@ -1,0 +1,24 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "getme_server/job.h"
+#include "getme_server/server_metrics.h"
+
+namespace getme::server {
+
+// What GET /metrics shows besides the counters: the registry's jobs at scrape time.
+struct JobsNow {
+  std::vector<std::shared_ptr<Job>> jobs;
+  std::int64_t queued = 0;
+  int workers = 0;
+  bool ready = true;
+};
+
+// Prometheus text exposition format 0.0.4 (docs/http.md lists every metric).
+std::string PrometheusText(const ServerMetrics::Snapshot& counters, const JobsNow& now);
+
+}  // namespace getme::server

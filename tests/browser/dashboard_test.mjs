@@ -1,0 +1,142 @@
+// The dashboard in a real browser: Debian's chromium driven by playwright-core against a real
+// getme-server running real smoothing jobs posted from the page.
+//   node dashboard_test.mjs GETME_SERVER OUTPUT_DIR
+// Exit 0 when every check passed, 1 otherwise, 77 (ctest SKIP_RETURN_CODE) without chromium.
+// OUTPUT_DIR receives the server log and screenshots for a human look.
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+const [serverBinary, outputDir] = process.argv.slice(2);
+const chromiumPath = process.env.GETME_CHROMIUM || '/usr/bin/chromium';
+if (!serverBinary || !outputDir) {
+  console.error('usage: node dashboard_test.mjs GETME_SERVER OUTPUT_DIR');
+  process.exit(2);
+}
+if (!fs.existsSync(chromiumPath)) {
+  console.log(`SKIP: ${chromiumPath} not found; install Debian's chromium (scripts/setup.sh does)`);
+  process.exit(77);
+}
+const { chromium } = await import('playwright-core');
+fs.mkdirSync(outputDir, { recursive: true });
+
+let passed = 0;
+let failed = 0;
+function check(name, ok, detail = '') {
+  if (ok) passed += 1;
+  else failed += 1;
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}${detail ? `: ${detail}` : ''}`);
+}
+
+// getme-server on free loopback ports; resolves with the dashboard URL from its log.
+function startServer() {
+  const log = fs.createWriteStream(path.join(outputDir, 'server.log'));
+  const server = spawn(serverBinary, ['--listen=127.0.0.1:0', '--http_listen=127.0.0.1:0',
+    '--workers=2', '--progress_interval=50ms', '--shutdown_grace=1s'],
+  { stdio: ['ignore', 'ignore', 'pipe'] });
+  const url = new Promise((resolve, reject) => {
+    let text = '';
+    server.stderr.on('data', (chunk) => {
+      log.write(chunk);
+      text += chunk;
+      const match = /HTTP gateway and dashboard at (http:\/\/\S+\/)/.exec(text);
+      if (match) resolve(match[1]);
+    });
+    server.on('exit', (code) => reject(new Error(`getme-server exited (${code}): ${text}`)));
+    setTimeout(() => reject(new Error(`getme-server did not start: ${text}`)), 20000);
+  });
+  return { server, url };
+}
+
+const chartPoints = (page) => page.$eval('#chart', (svg) => Number(svg.dataset.points));
+const shownState = (page) => page.textContent('#job-state');
+
+async function submitDemoJob(page, { cells, method, simultaneous, sequential }) {
+  await page.fill('input[name=cells]', String(cells));
+  await page.selectOption('select[name=method]', method);
+  await page.fill('input[name=simultaneous]', String(simultaneous));
+  await page.fill('input[name=sequential]', String(sequential));
+  await page.click('#demo-submit');
+  await page.waitForFunction(() => /queued/.test(document.getElementById('demo-status').textContent));
+  return page.textContent('#job-id');
+}
+
+const { server, url: serverUrl } = startServer();
+const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'getme-chromium-'));
+let context;
+try {
+  const url = await serverUrl;
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: chromiumPath,
+    headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+  const page = context.pages()[0] || await context.newPage();
+  page.setDefaultTimeout(60000);
+  page.on('pageerror', (error) => check('no script errors on the page', false, error.message));
+  await page.goto(url);
+  check('dashboard loads', (await page.title()).includes('getme'));
+
+  // 1. A GETMe job of a few seconds: the chart grows while it runs, the histogram appears.
+  const first = await submitDemoJob(page, {
+    cells: 12, method: 'METHOD_GETME', simultaneous: 500, sequential: 60000,
+  });
+  await page.waitForFunction(() => Number(document.getElementById('chart').dataset.points) > 2);
+  const early = await chartPoints(page);
+  await page.waitForTimeout(800);
+  const later = await chartPoints(page);
+  const stateLater = await shownState(page);
+  check('chart gains points while the job runs', later > early && stateLater === 'RUNNING',
+    `${early} → ${later} points, state ${stateLater}`);
+  await page.waitForSelector('#histogram[data-ready="true"]', { timeout: 120000 });
+  const bars = await page.$$eval('#histogram rect.bar-after', (rects) => rects.length);
+  const beforeBars = await page.$$eval('#histogram rect.bar-before', (rects) => rects.length);
+  check('final histogram shows before and after', bars === 20 && beforeBars === 20,
+    `${beforeBars} before, ${bars} after bins`);
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'SUCCEEDED');
+  const phases = await page.$$eval('#chart rect.phase', (rects) => rects.map((r) => r.dataset.phase));
+  check('both phases are marked', phases.includes('PHASE_SIMULTANEOUS') &&
+    phases.includes('PHASE_SEQUENTIAL'), phases.join(', '));
+  await page.screenshot({ path: path.join(outputDir, 'dashboard-succeeded.png'), fullPage: true });
+
+  // 2. A job that would run for minutes: cancel it from the page.
+  const second = await submitDemoJob(page, {
+    cells: 8, method: 'METHOD_SEQUENTIAL', simultaneous: 1, sequential: 1000000000,
+  });
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'RUNNING');
+  await page.click('#cancel');
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'CANCELLED');
+  const api = await (await fetch(`${url}v1/jobs/${second}`)).json();
+  check('cancel shows CANCELLED in the page and the API', api.state === 'JOB_STATE_CANCELLED',
+    api.state);
+  await page.waitForFunction((id) => {
+    const row = document.querySelector(`tr[data-job-id="${id}"] .state`);
+    return row && row.textContent === 'CANCELLED';
+  }, second);
+  check('job list shows the cancelled job', true);
+
+  // 3. A reload keeps the selection (URL hash) and the job list; the finished job's histogram
+  // comes back from its event stream.
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'CANCELLED');
+  const rows = await page.$$eval('#jobs tbody tr', (trs) => trs.map((tr) => tr.dataset.jobId));
+  check('after a reload the list has both jobs', rows.includes(first) && rows.includes(second),
+    rows.join(', '));
+  await page.click(`tr[data-job-id="${first}"]`);
+  await page.waitForSelector('#histogram[data-ready="true"]');
+  check('after a reload a finished job shows its histogram again', true);
+  await page.waitForFunction((n) => Number(document.getElementById('chart').dataset.points) >= n,
+    later);
+  check('after a reload its chart is drawn from the start (trace)', true);
+  await page.screenshot({ path: path.join(outputDir, 'dashboard-reloaded.png'), fullPage: true });
+} catch (error) {
+  check('browser run', false, error.stack || String(error));
+} finally {
+  if (context) await context.close();
+  server.kill('SIGTERM');
+  fs.rmSync(userDataDir, { recursive: true, force: true });
+}
+console.log(`browser_dashboard: ${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);
