@@ -266,13 +266,27 @@ def header(machine):
             f"{machine['kernel']}; {machine['compiler']}, CMake build type "
             f"{machine['build_type']}. Load average (1 min) {load[0]:.2f} at the start, "
             f"{load[1]:.2f} at the end."
-            + (f" Scheduling: {machine['scheduling']}." if machine.get("scheduling") else ""))
+            + (f" Scheduling: {machine['scheduling']}." if machine.get("scheduling") else "")
+            + "".join(addendum(a) for a in machine.get("addenda", [])))
+
+
+def addendum(run):
+    """A later `run_benchmarks.py --only` run whose groups replaced the main run's."""
+    load = run.get("load_average_start", [0])[0], run.get("load_average_end", [0])[0]
+    return (f"\n\nRe-run afterwards (`--only`): {', '.join(run['groups'])}, measured "
+            f"{run['date']}, commit `{run['commit']}`, {run['repeats']} repeat(s); load average "
+            f"{load[0]:.2f} at the start, {load[1]:.2f} at the end"
+            + (f"; scheduling: {run['scheduling']}" if run.get("scheduling") else "") + ".")
 
 
 def commands(machine):
     root = os.path.dirname(HERE) + "/"
     lines = ["```sh", machine["command"].replace(root, "")]
     lines += [command.replace(root, "") for command in machine["driver_commands"]]
+    for run in machine.get("addenda", []):
+        lines.append("# re-run afterwards:")
+        lines.append(run["command"].replace(root, ""))
+        lines += [command.replace(root, "") for command in run["driver_commands"]]
     lines.append("```")
     return "\n".join(lines)
 

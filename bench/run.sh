@@ -6,7 +6,8 @@
 #   bench/run.sh             the full run: paper-size meshes, 5 repeats, scaling to ~10M elements
 #   bench/run.sh --quick     minutes: small meshes, 1 repeat, scaling to ~100k elements
 # Further options go to bench/run_benchmarks.py (--repeats N, --max-elements N, --skip-service,
-# --skip-micro, --shared DIR); --no-build uses build/ as it is.
+# --skip-micro, --shared DIR, --only GROUPS to re-run some tables and keep the rest, recorded as an
+# addendum in the header); --no-build uses build/ as it is.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -16,7 +17,7 @@ for arg in "$@"; do
   case "$arg" in
     --no-build) build=0 ;;
     -h | --help)
-      sed -n '2,9s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
+      sed -n '2,10s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"
       exit 0
       ;;
     *) forwarded+=("$arg") ;;
