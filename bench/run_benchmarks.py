@@ -305,10 +305,10 @@ def main():
         if unknown:
             raise SystemExit(f"--only: unknown group(s) {', '.join(unknown)}; known: "
                              f"{', '.join(GROUPS)}")
+        # Each re-run measurement overwrites its files; measurements not re-run (e.g. beyond
+        # --max-elements) keep the main run's data.
         for group in groups:
-            if group in ("shared", "generated", "scaling", "service"):
-                shutil.rmtree(os.path.join(runner.data, group), ignore_errors=True)
-                shutil.rmtree(os.path.join(runner.work, group), ignore_errors=True)
+            shutil.rmtree(os.path.join(runner.work, group), ignore_errors=True)
     else:
         groups = [g for g in GROUPS if not (g == "service" and args.skip_service) and
                   not (g == "micro" and args.skip_micro)]
