@@ -14,23 +14,25 @@
 namespace getme {
 namespace {
 
-absl::Status InvalidInput(const MeshQuality& quality) {
+// "3 <adjective>elements, first: 4, 9, 12" for an error message.
+std::string CountedElements(const MeshQuality& quality, absl::string_view adjective) {
   std::vector<std::string> listed;
   for (ElementId e : quality.first_invalid) listed.push_back(absl::StrCat(e));
+  return absl::StrCat(quality.invalid, " ", adjective, "element", quality.invalid == 1 ? "" : "s",
+                      ", first: ", absl::StrJoin(listed, ", "));
+}
+
+absl::Status InvalidInput(const MeshQuality& quality) {
   return absl::FailedPreconditionError(
-      absl::StrCat("the mesh has ", quality.invalid, " invalid (inverted or degenerate) element",
-                   quality.invalid == 1 ? "" : "s", ", first: ", absl::StrJoin(listed, ", "),
+      absl::StrCat("the mesh has ", CountedElements(quality, "invalid (inverted or degenerate) "),
                    "; enable untangling or repair the mesh"));
 }
 
 // Plain Laplace is quality-unaware (a baseline): inverting elements is what it does, not an
 // engine fault, but its result is still a broken mesh and is not handed out as one.
 absl::Status PlainLaplaceInverted(const MeshQuality& after) {
-  std::vector<std::string> listed;
-  for (ElementId e : after.first_invalid) listed.push_back(absl::StrCat(e));
   return absl::FailedPreconditionError(
-      absl::StrCat("plain Laplace smoothing inverted ", after.invalid, " element",
-                   after.invalid == 1 ? "" : "s", ", first: ", absl::StrJoin(listed, ", "),
+      absl::StrCat("plain Laplace smoothing inverted ", CountedElements(after, ""),
                    "; it does not check validity: use smart-laplace or getme"));
 }
 
