@@ -273,7 +273,12 @@ def header(machine):
 def addendum(run):
     """A later `run_benchmarks.py --only` run whose groups replaced the main run's."""
     load = run.get("load_average_start", [0])[0], run.get("load_average_end", [0])[0]
-    return (f"\n\nRe-run afterwards (`--only`): {', '.join(run['groups'])}, measured "
+    words = run["command"].split()
+    limit = ""
+    if "--max-elements" in words[:-1]:
+        limit = (f" (meshes up to {int(words[words.index('--max-elements') + 1]):,} elements; "
+                 "larger ones are the main run's)")
+    return (f"\n\nRe-run afterwards (`--only`): {', '.join(run['groups'])}{limit}, measured "
             f"{run['date']}, commit `{run['commit']}`, {run['repeats']} repeat(s); load average "
             f"{load[0]:.2f} at the start, {load[1]:.2f} at the end"
             + (f"; scheduling: {run['scheduling']}" if run.get("scheduling") else "") + ".")
