@@ -144,6 +144,12 @@ function addPoint(job, event) {
   const sequence = Number(event.sequence);
   if (sequence <= (job.lastSequence || 0)) return;
   job.lastSequence = sequence;
+  // A progress event means a worker has the job; the state poll may not have caught up yet.
+  const badge = $('job-state');
+  if (badge.textContent === 'QUEUED') {
+    badge.textContent = 'RUNNING';
+    badge.className = 'state RUNNING';
+  }
   const point = {
     phase: event.phase, iteration: Number(event.iteration), qMin: event.qMin, qMean: event.qMean,
   };

@@ -80,16 +80,20 @@ try {
   check('dashboard loads', (await page.title()).includes('getme'));
 
   // 1. A GETMe job of a few seconds: the chart grows while it runs, the histogram appears.
+  // 2,000 simultaneous iterations (tolerance 0) keep it running for seconds on a quiet machine.
   const first = await submitDemoJob(page, {
-    cells: 12, method: 'METHOD_GETME', simultaneous: 500, sequential: 60000,
+    cells: 12, method: 'METHOD_GETME', simultaneous: 2000, sequential: 60000,
   });
   await page.waitForFunction(() => Number(document.getElementById('chart').dataset.points) > 2);
   const early = await chartPoints(page);
-  await page.waitForTimeout(800);
+  // The state shown at the moment the chart first has more points than `early`.
+  const stateWhenGrown = await (await page.waitForFunction((n) => {
+    const points = Number(document.getElementById('chart').dataset.points);
+    return points > n ? document.getElementById('job-state').textContent : null;
+  }, early, { polling: 50 })).jsonValue();
   const later = await chartPoints(page);
-  const stateLater = await shownState(page);
-  check('chart gains points while the job runs', later > early && stateLater === 'RUNNING',
-    `${early} → ${later} points, state ${stateLater}`);
+  check('chart gains points while the job runs', later > early && stateWhenGrown === 'RUNNING',
+    `${early} → ${later} points, state ${stateWhenGrown}`);
   await page.waitForSelector('#histogram[data-ready="true"]', { timeout: 120000 });
   const bars = await page.$$eval('#histogram rect.bar-after', (rects) => rects.length);
   const beforeBars = await page.$$eval('#histogram rect.bar-before', (rects) => rects.length);
@@ -121,9 +125,13 @@ try {
   // comes back from its event stream.
   await page.reload();
   await page.waitForFunction(() => document.getElementById('job-state').textContent === 'CANCELLED');
+  // The list comes from its own request (GET /v1/jobs), which may land after the selected job's.
+  const listed = await page.waitForFunction(([a, b]) => {
+    const ids = [...document.querySelectorAll('#jobs tbody tr')].map((tr) => tr.dataset.jobId);
+    return ids.includes(a) && ids.includes(b);
+  }, [first, second], { timeout: 10000 }).then(() => true, () => false);
   const rows = await page.$$eval('#jobs tbody tr', (trs) => trs.map((tr) => tr.dataset.jobId));
-  check('after a reload the list has both jobs', rows.includes(first) && rows.includes(second),
-    rows.join(', '));
+  check('after a reload the list has both jobs', listed, rows.join(', '));
   await page.click(`tr[data-job-id="${first}"]`);
   await page.waitForSelector('#histogram[data-ready="true"]');
   check('after a reload a finished job shows its histogram again', true);
