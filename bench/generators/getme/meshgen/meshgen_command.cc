@@ -61,6 +61,17 @@ absl::Status ParseNumber(const std::string& flag, const std::string& value, T& o
   return absl::OkStatus();
 }
 
+// The plate's and the ring's options with the command's size, distortion and seed; what the
+// command leaves unset keeps the generator's default.
+template <typename Options>
+Options SizedOptions(const MeshgenCommand& command) {
+  Options options;
+  options.target_elements = command.elements.value_or(options.target_elements);
+  options.distortion = command.distortion.value_or(options.distortion);
+  options.seed = command.seed;
+  return options;
+}
+
 }  // namespace
 
 absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> args) {
@@ -150,20 +161,10 @@ absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
       return ThinPrismVessel(command.elements.has_value()
                                  ? VesselOptionsForElements(*command.elements, command.vessel)
                                  : command.vessel);
-    case MeshKind::kPlate: {
-      PlateWithHolesOptions options;
-      options.target_elements = command.elements.value_or(options.target_elements);
-      options.distortion = command.distortion.value_or(options.distortion);
-      options.seed = command.seed;
-      return PlateWithHoles(options);
-    }
-    case MeshKind::kRing: {
-      RingInBlockOptions options;
-      options.target_elements = command.elements.value_or(options.target_elements);
-      options.distortion = command.distortion.value_or(options.distortion);
-      options.seed = command.seed;
-      return RingInBlock(options);
-    }
+    case MeshKind::kPlate:
+      return PlateWithHoles(SizedOptions<PlateWithHolesOptions>(command));
+    case MeshKind::kRing:
+      return RingInBlock(SizedOptions<RingInBlockOptions>(command));
   }
   return absl::InternalError("GenerateMesh: unhandled mesh kind");
 }
