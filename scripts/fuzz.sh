@@ -6,6 +6,8 @@
 # target crashed, leaked, timed out or hit an invariant (its reproducer is then in
 # build-fuzz/fuzz/artifacts/TARGET/, see docs/fuzzing.md).
 #   scripts/fuzz.sh [SECONDS_PER_TARGET]
+#   scripts/fuzz.sh --build-only          configure and build only
+#   scripts/fuzz.sh --no-build [SECONDS]  run what was built (scripts/test.sh times the two apart)
 # Environment:
 #   GETME_FUZZ_TARGETS    targets to run (default: all), e.g. "vtk gmsh"
 #   GETME_FUZZ_MAX_SEED_KB  largest shared mesh used as a seed (default 100; big inputs fuzz slowly)
@@ -15,8 +17,22 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+build=1
+run=1
+case "${1:-}" in
+  --build-only)
+    run=0
+    shift
+    ;;
+  --no-build)
+    build=0
+    shift
+    ;;
+esac
 seconds="${1:-60}"
-[[ "$seconds" =~ ^[0-9]+$ ]] && [ "$seconds" -gt 0 ] || die "SECONDS_PER_TARGET must be a positive integer"
+if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -eq 0 ]; then
+  die "SECONDS_PER_TARGET must be a positive integer"
+fi
 read -ra targets <<< "${GETME_FUZZ_TARGETS:-vtk vtu gmsh medit mesh_file engine_mesh wire_mesh}"
 max_seed_kb="${GETME_FUZZ_MAX_SEED_KB:-100}"
 shared_meshes="${GETME_SHARED_MESHES:-$GETME_ROOT/../shared/meshes}"
@@ -25,27 +41,45 @@ fuzz_dir="$build_dir/fuzz"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
-command -v clang++-14 > /dev/null || die "clang++-14 not found (scripts/packages.txt: clang-14)"
 start=$SECONDS
-configure=(cmake -S "$GETME_ROOT" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++-14 -DGETME_FUZZ=ON
-  -DGETME_BUILD_TESTS=OFF -DGETME_BUILD_BENCH=OFF -DGETME_BUILD_SERVICE=ON
-  # -O1 as the sanitizer builds (scripts/build.sh): compiles much faster; asserts stay on.
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1")
-[ -f "$build_dir/CMakeCache.txt" ] || configure+=(-G Ninja)
-log "Configuring $build_dir (clang++-14, libFuzzer + ASan + UBSan)"
-"${configure[@]}" > /dev/null
-log "Building the fuzz targets with $(build_jobs) jobs"
-cmake --build "$build_dir" --target getme_fuzz --parallel "$(build_jobs)"
+if [ "$build" = 1 ]; then
+  command -v clang++-14 > /dev/null || die "clang++-14 not found (scripts/packages.txt: clang-14)"
+  configure=(cmake -S "$GETME_ROOT" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++-14 -DGETME_FUZZ=ON
+    -DGETME_BUILD_TESTS=OFF -DGETME_BUILD_BENCH=OFF -DGETME_BUILD_SERVICE=ON
+    # -O1 as the sanitizer builds (scripts/build.sh): compiles much faster; asserts stay on.
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1")
+  [ -f "$build_dir/CMakeCache.txt" ] || configure+=(-G Ninja)
+  log "Configuring $build_dir (clang++-14, libFuzzer + ASan + UBSan)"
+  "${configure[@]}" > /dev/null
+  log "Building the fuzz targets with $(build_jobs) jobs"
+  cmake --build "$build_dir" --target getme_fuzz --parallel "$(build_jobs)"
+fi
 build_seconds=$((SECONDS - start))
+[ "$run" = 1 ] || exit 0
 
 log "Writing the seed corpus"
 seed_meshes=()
 while IFS= read -r -d '' mesh; do seed_meshes+=("$mesh"); done < <(
   find "$shared_meshes" "$GETME_ROOT/tests/data" -maxdepth 2 -type f -name '*.vtk' \
-    -size -"$max_seed_kb"k -print0 2> /dev/null | sort -z)
+    -not -path '*/fuzz-regressions/*' -size -"$max_seed_kb"k -print0 2> /dev/null | sort -z)
 [ "${#seed_meshes[@]}" -gt 0 ] || die "no seed meshes in $shared_meshes or tests/data"
 rm -rf "$fuzz_dir/seeds"
 run_instrumented address "$fuzz_dir/getme-fuzz-seeds" "$fuzz_dir/seeds" "${seed_meshes[@]}"
+# The inputs that once found a bug, as they are, for their format's target and the generic ones.
+for input in "$GETME_ROOT"/tests/data/fuzz-regressions/*; do
+  [ -f "$input" ] || continue
+  case "$input" in
+    *.vtk) format_target=vtk ;;
+    *.vtu) format_target=vtu ;;
+    *.msh) format_target=gmsh ;;
+    *.mesh) format_target=medit ;;
+    *) format_target=wire_mesh ;;
+  esac
+  for target in "$format_target" mesh_file engine_mesh; do
+    mkdir -p "$fuzz_dir/seeds/$target"
+    cp "$input" "$fuzz_dir/seeds/$target/"
+  done
+done
 
 # dictionary_for TARGET: the -dict= option of a target (the generic ones get every format's words).
 dictionary_for() {
@@ -73,9 +107,10 @@ for target in "${targets[@]}"; do
   mkdir -p "$corpus" "$artifacts" "$(dirname "$run_log")" "$fuzz_dir/seeds/$target"
   log "Fuzzing $target for ${seconds}s"
   result=passed
+  read -ra dictionary <<< "$(dictionary_for "$target")"
   # The first folder collects new units (kept for the next run), the seeds are only read.
   run_instrumented address "$binary" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
-    -print_final_stats=1 -artifact_prefix="$artifacts/" $(dictionary_for "$target") \
+    -print_final_stats=1 -artifact_prefix="$artifacts/" "${dictionary[@]}" \
     "$corpus" "$fuzz_dir/seeds/$target" > "$run_log" 2>&1 || result=FAILED
   # The last status line ("#N DONE cov: 1234 ft: 5678 corp: …") holds the final coverage.
   status_line="$(grep -E '^#[0-9]+' "$run_log" | tail -1)"
