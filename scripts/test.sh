@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds, and runs the whole test suite three times: the Release build
-# (build/), then ASan+UBSan (build-asan/) and TSan (build-tsan/). Exits nonzero if any build or
-# test fails; every stage still runs, and a summary with timings comes last.
+# (build/), then ASan+UBSan (build-asan/) and TSan (build-tsan/); then a short run of every
+# libFuzzer target (scripts/fuzz.sh, build-fuzz/). Exits nonzero if any build, test or fuzz target
+# fails; every stage still runs, and a summary with timings comes last.
 # Environment:
-#   GETME_SKIP_SANITIZERS=1      run the Release suite only
+#   GETME_SKIP_SANITIZERS=1      run the Release suite only (no sanitizer or fuzz stage)
+#   GETME_FUZZ_SECONDS           seconds per fuzz target in the fuzz stage (default 20; 0 skips it)
 #   GETME_SANITIZER_CTEST_ARGS   ctest filter for the sanitizer runs (default: -LE slow, i.e. all
 #                                tests but those labelled slow), e.g. "-R Smoother" or "" for all
 #   GETME_JOBS                   parallel compile and test jobs (default: every core)
@@ -49,6 +51,28 @@ if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ]; then
 else
   run_stage asan+ubsan address "${sanitizer_filter[@]}"
   run_stage tsan thread "${sanitizer_filter[@]}"
+fi
+
+# The fuzz stage: build, then every target for GETME_FUZZ_SECONDS from the seed corpus. A crash
+# fails the stage; its reproducer is in build-fuzz/fuzz/artifacts/ (docs/fuzzing.md).
+run_fuzz_stage() {
+  local seconds="$1" start build_seconds result=passed
+  start=$SECONDS
+  bash "$GETME_ROOT/scripts/fuzz.sh" --build-only || result="FAILED (build)"
+  build_seconds=$((SECONDS - start))
+  if [ "$result" = passed ]; then
+    bash "$GETME_ROOT/scripts/fuzz.sh" --no-build "$seconds" || result="FAILED (fuzz)"
+  fi
+  [ "$result" = passed ] || failed=1
+  summary+=("$(printf '%-10s %-16s build %5ds  fuzz  %5ds' fuzz "$result" "$build_seconds" \
+    $((SECONDS - start - build_seconds)))")
+}
+
+fuzz_seconds="${GETME_FUZZ_SECONDS:-20}"
+if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ] || [ "$fuzz_seconds" = 0 ]; then
+  summary+=("fuzzing skipped (GETME_SKIP_SANITIZERS=1 or GETME_FUZZ_SECONDS=0)")
+else
+  run_fuzz_stage "$fuzz_seconds"
 fi
 
 log "Summary (total ${SECONDS}s)"

@@ -109,6 +109,12 @@ class Parser {
     }
     const std::optional<absl::string_view> title = scanner_.ReadRawLine();
     if (!title) return Error(scanner_.here(), "the file ends before the title line (line 2)");
+    // A carriage return left after the line ending's: the writer could not write it back (a
+    // VTK reader would end the line there), so the file is refused rather than half-kept.
+    if (title->find('\r') != absl::string_view::npos) {
+      return Error(scanner_.location(),
+                   "the title holds a carriage return that is not part of the line ending");
+    }
     file_.title = std::string(*title);
 
     const std::vector<absl::string_view> format = scanner_.ReadKeywordLine();

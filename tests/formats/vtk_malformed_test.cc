@@ -68,6 +68,18 @@ TEST(VtkMalformed, UnknownEncoding) {
             "line 3: expected 'ASCII' or 'BINARY', found 'XML'");
 }
 
+// Found by fuzz/vtk_fuzzer.cc: a title ending in "\r\r\n" kept one '\r', which the writer then
+// refused, so the file read but could not be written back. A CRLF line ending is still fine.
+TEST(VtkMalformed, CarriageReturnInsideTheTitle) {
+  EXPECT_EQ(ParseError(Replace(kTet, "tet\n", "tet\r\r\n")),
+            "line 2: the title holds a carriage return that is not part of the line ending");
+  EXPECT_EQ(ParseError(Replace(kTet, "tet\n", "t\ret\n")),
+            "line 2: the title holds a carriage return that is not part of the line ending");
+  const absl::StatusOr<VtkFile> crlf = ParseVtk(Replace(kTet, "tet\n", "tet\r\n"));
+  ASSERT_TRUE(crlf.ok()) << crlf.status();
+  EXPECT_EQ(crlf->title, "tet");
+}
+
 TEST(VtkMalformed, OtherDatasetTypes) {
   EXPECT_EQ(ParseError(Replace(kTet, "UNSTRUCTURED_GRID", "POLYDATA")),
             "line 4: DATASET POLYDATA is not supported; getme reads DATASET UNSTRUCTURED_GRID");

@@ -44,6 +44,12 @@ std::string Quote(absl::string_view text) {
   return absl::StrCat("'", text, "'");
 }
 
+// Gmsh ends a quoted name at its first inner '"' (ExtractDoubleQuotedString) and MSH has no
+// escape, so a name holding one (or a stray carriage return) could not be written back as read.
+bool HoldsUnwritableText(absl::string_view text) {
+  return text.find_first_of("\"\r") != absl::string_view::npos;
+}
+
 std::optional<std::int64_t> ParseInt(absl::string_view token) {
   return ParseIntegerToken(token, VtkDataType::kInt64);
 }
@@ -362,9 +368,15 @@ class Parser {
                      absl::StrCat("physical name ", i + 1, " of ", *count,
                                   ": expected 'dim tag \"name\"' (dim 0-3), found ", Quote(*line)));
       }
+      const absl::string_view name = line->substr(open + 1, close - open - 1);
+      if (HoldsUnwritableText(name)) {
+        return Error(cursor_.Where(), absl::StrCat("physical name ", i + 1, " of ", *count,
+                                                   ": the name holds a '\"' or a carriage "
+                                                   "return, found ",
+                                                   Quote(*line)));
+      }
       extras().physical_names.push_back(
-          GmshPhysicalName{static_cast<int>(*dim), static_cast<int>(*tag),
-                           std::string(line->substr(open + 1, close - open - 1))});
+          GmshPhysicalName{static_cast<int>(*dim), static_cast<int>(*tag), std::string(name)});
     }
     return ExpectEnd();
   }
@@ -879,6 +891,12 @@ class Parser {
           absl::string_view text = *value;
           if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
             text = text.substr(1, text.size() - 2);
+          }
+          if (HoldsUnwritableText(text)) {
+            return Error(cursor_.Where(),
+                         absl::StrCat("string tag ", k + 1, " of ", *n,
+                                      ": the text holds a '\"' or a carriage return, found ",
+                                      Quote(*value)));
           }
           view.string_tags.emplace_back(text);
         } else if (list == 1) {

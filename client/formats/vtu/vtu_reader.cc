@@ -265,6 +265,12 @@ class Reader {
   absl::StatusOr<VtkDataArray> ReadArray(pugi::xml_node node, Expected expected) {
     VtkDataArray array;
     array.name = node.attribute("Name").value();
+    // Not well-formed XML 1.0, which pugixml does not check: such a name could not be written back.
+    for (const char c : array.name) {
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+        return Error(node, "Name holds a control character, which XML cannot carry");
+      }
+    }
     const absl::string_view type_name = node.attribute("type").value();
     const std::optional<VtkDataType> type = vtu::ParseXmlTypeName(type_name);
     if (!type) {

@@ -246,6 +246,21 @@ TEST(GmshMalformed, BadNodesAndData) {
             "0-3), found '3 \"solid\"'");
 }
 
+// Found by fuzz/engine_mesh_fuzzer.cc: the reader kept names the writer then refused as
+// inconsistent extras, so a file read fine but could not be written back. Gmsh ends a quoted
+// name at its first inner '"', and MSH has no escape: such names are refused when read.
+TEST(GmshMalformed, NamesHoldingAQuoteOrACarriageReturn) {
+  EXPECT_EQ(ParseError(Replace(kMsh22, "3 1 \"solid\"", "3 1 \"so\"lid\"")),
+            "line 6 in $PhysicalNames: physical name 1 of 1: the name holds a '\"' or a carriage "
+            "return, found '3 1 \"so\"lid\"'");
+  EXPECT_EQ(ParseError(Replace(kMsh22, "1\n\"fixed\"\n", "1\nx\"fixed\"\n")),
+            "line 23 in $NodeData: string tag 1 of 1: the text holds a '\"' or a carriage "
+            "return, found 'x\"fixed\"'");
+  EXPECT_EQ(ParseError(Replace(kMsh22, "1\n\"fixed\"\n", "1\n\"fi\rxed\"\n")),
+            "line 23 in $NodeData: string tag 1 of 1: the text holds a '\"' or a carriage "
+            "return, found '\"fi\rxed\"'");
+}
+
 TEST(GmshMalformed, SectionStructure) {
   EXPECT_EQ(ParseError(std::string(kMsh22) + "$Foo\nbar\n"),
             "line 33 in $Foo: no '$EndFoo' closes the section");

@@ -185,6 +185,26 @@ TEST(VtuMalformed, Arrays) {
             "line 16: <Cells>: has no DataArray named 'connectivity'");
 }
 
+// Found by fuzz/vtu_fuzzer.cc: pugixml does not check that attribute text is XML 1.0, so a name
+// with a control character (raw or as a character reference) was read, and the writer then
+// refused it. A tab, CR or LF (written as character references) is still fine.
+TEST(VtuMalformed, ArrayNameWithAControlCharacter) {
+  EXPECT_EQ(ParseError(Replace(kTets, "Name=\"fixed\"",
+                               "Name=\"fix\x14"
+                               "ed\"")),
+            "line 6: DataArray 'fix\x14"
+            "ed' of <PointData>: Name holds a control character, which "
+            "XML cannot carry");
+  EXPECT_EQ(ParseError(Replace(kTets, "Name=\"fixed\"", "Name=\"fix&#x1;ed\"")),
+            "line 6: DataArray 'fix\x01"
+            "ed' of <PointData>: Name holds a control character, which "
+            "XML cannot carry");
+  const absl::StatusOr<MeshDocument> tab =
+      ParseVtu(Replace(kTets, "Name=\"fixed\"", "Name=\"a&#9;b\""));
+  ASSERT_TRUE(tab.ok()) << tab.status();
+  EXPECT_NE(FindArray(tab->grid.point_data, "a\tb"), nullptr);
+}
+
 TEST(VtuMalformed, BadBase64) {
   std::string text = Binary(VtuLayout::kInline, false);
   // The first data character of the first binary array (fixed).

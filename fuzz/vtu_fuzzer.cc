@@ -1,0 +1,60 @@
+// libFuzzer target: the VTK XML (.vtu) reader, and the writer in every layout on what it accepts.
+#include <cstddef>
+#include <cstdint>
+
+#include "absl/strings/str_cat.h"
+#include "formats/vtu/vtu_reader.h"
+#include "formats/vtu/vtu_writer.h"
+#include "fuzz_check.h"
+
+namespace getme::fuzz {
+namespace {
+
+std::string Describe(const formats::WriteOptions& options) {
+  if (options.encoding == formats::VtkEncoding::kAscii) return "ascii";
+  return absl::StrCat(options.vtu_layout == formats::VtuLayout::kInline ? "inline" : "appended",
+                      options.vtu_compress ? " compressed" : "");
+}
+
+void CheckRoundTrip(const formats::MeshDocument& document, const formats::WriteOptions& options) {
+  const std::string name = Describe(options);
+  absl::StatusOr<std::string> text = formats::SerializeVtu(document, options);
+  CheckOk(text.status(), absl::StrCat("SerializeVtu ", name, " of a parsed file"));
+  absl::StatusOr<formats::MeshDocument> again = formats::ParseVtu(*text);
+  CheckOk(again.status(), absl::StrCat("ParseVtu of SerializeVtu's ", name, " output"));
+  CheckSameGeometry(document.grid, again->grid, absl::StrCat("VTU ", name, " round trip"));
+  absl::StatusOr<std::string> text_again = formats::SerializeVtu(*again, options);
+  CheckOk(text_again.status(), absl::StrCat("SerializeVtu ", name, " of a round trip"));
+  Check(*text_again == *text, absl::StrCat("VTU ", name, " output is not a fixed point"));
+}
+
+}  // namespace
+}  // namespace getme::fuzz
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  getme::fuzz::QuietLogging();
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace getme;
+  absl::StatusOr<formats::MeshDocument> document =
+      formats::ParseVtu(absl::string_view(reinterpret_cast<const char*>(data), size));
+  if (!document.ok()) {
+    fuzz::Check(
+        document.status().code() == absl::StatusCode::kInvalidArgument,
+        absl::StrCat("ParseVtu error is not InvalidArgument: ", document.status().ToString()));
+    return 0;
+  }
+  fuzz::CheckRoundTrip(*document, document->as_read);
+  formats::WriteOptions options;
+  options.encoding = formats::VtkEncoding::kAscii;
+  fuzz::CheckRoundTrip(*document, options);
+  options.encoding = formats::VtkEncoding::kBinary;
+  options.vtu_layout = formats::VtuLayout::kInline;
+  fuzz::CheckRoundTrip(*document, options);
+  options.vtu_layout = formats::VtuLayout::kAppended;
+  options.vtu_compress = true;
+  fuzz::CheckRoundTrip(*document, options);
+  return 0;
+}
