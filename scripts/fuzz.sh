@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/, clang-14, ASan+UBSan) in build-fuzz/ and runs each for
+# Builds the libFuzzer targets (fuzz/, clang-14, ASan+UBSan) in build-asan/ and runs each for
 # SECONDS_PER_TARGET (default 60) from the seed corpus (the shared meshes and tests/data written in
 # every format, fuzz/make_seeds.cc) plus the corpus earlier runs kept. Prints per target the
 # executions, exec/s, coverage (libFuzzer's final cov: and ft:) and new corpus units; exits 1 if a
 # target crashed, leaked, timed out or hit an invariant (its reproducer is then in
-# build-fuzz/fuzz/artifacts/TARGET/, see docs/fuzzing.md).
+# build-asan/fuzz/artifacts/TARGET/, see docs/fuzzing.md).
 #   scripts/fuzz.sh [SECONDS_PER_TARGET]
 #   scripts/fuzz.sh --build-only          configure and build only
 #   scripts/fuzz.sh --no-build [SECONDS]  run what was built (scripts/test.sh times the two apart)
@@ -36,23 +36,15 @@ fi
 read -ra targets <<< "${GETME_FUZZ_TARGETS:-vtk vtu gmsh medit mesh_file engine_mesh wire_mesh}"
 max_seed_kb="${GETME_FUZZ_MAX_SEED_KB:-100}"
 shared_meshes="${GETME_SHARED_MESHES:-$GETME_ROOT/../shared/meshes}"
-build_dir="$GETME_ROOT/build-fuzz"
+build_dir="$(build_dir_for address)"
 fuzz_dir="$build_dir/fuzz"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
 start=$SECONDS
 if [ "$build" = 1 ]; then
-  command -v clang++-14 > /dev/null || die "clang++-14 not found (scripts/packages.txt: clang-14)"
-  configure=(cmake -S "$GETME_ROOT" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++-14 -DGETME_FUZZ=ON
-    -DGETME_BUILD_TESTS=OFF -DGETME_BUILD_BENCH=OFF -DGETME_BUILD_SERVICE=ON
-    # -O1 as the sanitizer builds (scripts/build.sh): compiles much faster; asserts stay on.
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1")
-  [ -f "$build_dir/CMakeCache.txt" ] || configure+=(-G Ninja)
-  log "Configuring $build_dir (clang++-14, libFuzzer + ASan + UBSan)"
-  "${configure[@]}" > /dev/null
-  log "Building the fuzz targets with $(build_jobs) jobs"
-  cmake --build "$build_dir" --target getme_fuzz --parallel "$(build_jobs)"
+  # The ASan+UBSan build of scripts/build.sh holds the targets: one instrumented copy of the code.
+  bash "$GETME_ROOT/scripts/build.sh" --sanitize address --target getme_fuzz
 fi
 build_seconds=$((SECONDS - start))
 [ "$run" = 1 ] || exit 0

@@ -175,7 +175,7 @@ class Parser {
       if (!Consume(":")) return std::nullopt;
       std::optional<JsonValue> member = ParseValue();
       if (!member) return std::nullopt;
-      value.object.emplace_back(*std::move(key), *std::move(member));
+      value.object.push_back({*std::move(key), *std::move(member)});
       SkipSpace();
       if (Consume("}")) return value;
       if (!Consume(",")) return std::nullopt;

@@ -2,10 +2,11 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace getme::cli::testing {
+
+struct JsonMember;
 
 // A strict RFC 8259 JSON parser for checking the CLI's output independently of its writer.
 struct JsonValue {
@@ -15,11 +16,17 @@ struct JsonValue {
   double number = 0.0;
   std::string string;
   std::vector<JsonValue> array;
-  std::vector<std::pair<std::string, JsonValue>> object;  // in document order
+  // In document order. Members are their own type: std::pair may not hold the incomplete JsonValue.
+  std::vector<JsonMember> object;
 
   // The member `key` of an object, or null if absent.
   const JsonValue* Find(const std::string& key) const;
   bool Has(const std::string& key) const { return Find(key) != nullptr; }
+};
+
+struct JsonMember {
+  std::string key;
+  JsonValue value;
 };
 
 // nullopt on any syntax error, including trailing characters after the value.

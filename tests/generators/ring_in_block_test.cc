@@ -70,7 +70,9 @@ TEST_F(RingInBlockTest, EveryElementIsValidAndAllThreeTypesArePresent) {
 TEST_F(RingInBlockTest, BoundaryIsTheBoxAndTheRingSurface) {
   const RingLayout& ring = *layout_;
   std::int64_t ring_faces = 0;
-  for (const auto& [key, use] : CensusFaces(*mesh_)) {
+  for (const auto& [key, face_use] : CensusFaces(*mesh_)) {
+    // A plain reference: clang 14 cannot capture a structured binding in the lambdas below.
+    const auto& use = face_use;
     ASSERT_LE(use.elements.size(), 2u);
     if (use.elements.size() == 2) continue;
     const auto on_box = [&](int axis, double plane) {

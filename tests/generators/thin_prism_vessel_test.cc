@@ -137,7 +137,9 @@ TEST_F(ThinPrismVesselTest, BoundaryIsTheOuterPrismSurfaceAndTheEndCaps) {
   const Mesh& mesh = *mesh_;
   std::int64_t outer = 0, cap = 0, other = 0;
   const double tolerance = 0.05 * options.mesh_size;
-  for (const auto& [key, use] : CensusFaces(mesh)) {
+  for (const auto& [key, face_use] : CensusFaces(mesh)) {
+    // A plain reference: clang 14 cannot capture a structured binding in the lambdas below.
+    const auto& use = face_use;
     if (use.elements.size() != 1) continue;
     const auto radial = [&](NodeId n) { return std::hypot(mesh.x()[n], mesh.y()[n]); };
     const bool on_outer_surface = std::all_of(use.nodes.begin(), use.nodes.end(), [&](NodeId n) {

@@ -53,7 +53,9 @@ TEST(VesselSizeTest, StackedSegmentsJoinIntoOneConformingVessel) {
   EXPECT_EQ(mesh->element_count(ElementType::kTetrahedron) % 3, 0);
   EXPECT_EQ(mesh->element_count(ElementType::kPrism) % (3 * options.layers), 0);
   std::int64_t bottom = 0, top = 0, outer = 0, other = 0;
-  for (const auto& [key, use] : CensusFaces(*mesh)) {
+  for (const auto& [key, face_use] : CensusFaces(*mesh)) {
+    // A plain reference: clang 14 cannot capture a structured binding in the lambdas below.
+    const auto& use = face_use;
     ASSERT_LE(use.elements.size(), 2u);
     if (use.elements.size() == 2) continue;
     // Layer nodes over the caps' rims leave the cap plane slightly: the wall normals there are
