@@ -62,7 +62,9 @@ int main(int argc, char** argv) {
       "see proto/getme/v1/smoother.proto), with grpc.health.v1 health checking and server "
       "reflection, and an HTTP/JSON gateway with a live dashboard (--http_listen). SIGTERM or "
       "SIGINT drains it: no new jobs, running jobs may finish within "
-      "--shutdown_grace, queued ones are cancelled, exit code 0.");
+      "--shutdown_grace, queued ones are cancelled, exit code 0. Access control (off by default): "
+      "TLS with --tls_cert/--tls_key (mutual TLS with --tls_client_ca), bearer tokens and "
+      "per-owner jobs with --auth_tokens_file (docs/reliability-access.md).");
   // --help lists this file's flags (Abseil's default looks for a file named after the binary).
   absl::FlagsUsageConfig usage_config;
   usage_config.contains_help_flags = [](absl::string_view file) {
