@@ -19,7 +19,7 @@
 #include "spdlog/spdlog.h"
 
 ABSL_FLAG(std::string, listen, "127.0.0.1:50051",
-          "host:port to listen on (plaintext gRPC); port 0 picks a free port");
+          "host:port to listen on (gRPC; TLS with --tls_cert); port 0 picks a free port");
 ABSL_FLAG(std::string, http_listen, "127.0.0.1:8080",
           "host:port of the HTTP gateway: dashboard at /, JSON jobs API under /v1/jobs, /healthz, "
           "/readyz, /metrics (docs/http.md); empty = no HTTP; port 0 picks a free port. When this "
@@ -40,13 +40,31 @@ ABSL_FLAG(absl::Duration, progress_interval, absl::Milliseconds(100),
 ABSL_FLAG(absl::Duration, shutdown_grace, absl::Seconds(30),
           "on SIGTERM/SIGINT: how long running jobs may finish before they are cancelled");
 
+ABSL_FLAG(std::string, auth_tokens_file, "",
+          "bearer tokens, one per line: TOKEN or NAME:TOKEN (# comments and blank lines allowed, "
+          "tokens of at least 16 characters). When set, every getme.v1.Smoother call needs "
+          "metadata 'authorization: Bearer <token>' and every /v1/ and /metrics request the "
+          "header 'Authorization: Bearer <token>' (else UNAUTHENTICATED / 401), and each caller "
+          "sees only the jobs its token's owner created (NAME, or line<N> for a bare token). "
+          "Health checks, reflection, /healthz, /readyz and the dashboard page stay open. "
+          "Empty = no authentication. Read at startup: changing tokens needs a restart");
+ABSL_FLAG(std::string, tls_cert, "",
+          "PEM certificate chain: serve TLS on both listeners (gRPC and HTTPS) with --tls_key; "
+          "plaintext connections are then refused. Empty = plaintext");
+ABSL_FLAG(std::string, tls_key, "", "PEM private key (unencrypted) of --tls_cert");
+ABSL_FLAG(std::string, tls_client_ca, "",
+          "PEM CA certificate(s): with --tls_cert, require every client (gRPC and HTTP) to present "
+          "a certificate signed by one of them (mutual TLS)");
+
 int main(int argc, char** argv) {
   absl::SetProgramUsageMessage(
       "getme-server [flags]: serves GETMe mesh smoothing over gRPC (service getme.v1.Smoother, "
       "see proto/getme/v1/smoother.proto), with grpc.health.v1 health checking and server "
       "reflection, and an HTTP/JSON gateway with a live dashboard (--http_listen). SIGTERM or "
       "SIGINT drains it: no new jobs, running jobs may finish within "
-      "--shutdown_grace, queued ones are cancelled, exit code 0.");
+      "--shutdown_grace, queued ones are cancelled, exit code 0. Access control (off by default): "
+      "TLS with --tls_cert/--tls_key (mutual TLS with --tls_client_ca), bearer tokens and "
+      "per-owner jobs with --auth_tokens_file (docs/reliability-access.md).");
   // --help lists this file's flags (Abseil's default looks for a file named after the binary).
   absl::FlagsUsageConfig usage_config;
   usage_config.contains_help_flags = [](absl::string_view file) {
@@ -80,6 +98,10 @@ int main(int argc, char** argv) {
   options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
   options.progress_interval = absl::GetFlag(FLAGS_progress_interval);
   options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+  options.auth_tokens_file = absl::GetFlag(FLAGS_auth_tokens_file);
+  options.tls_cert = absl::GetFlag(FLAGS_tls_cert);
+  options.tls_key = absl::GetFlag(FLAGS_tls_key);
+  options.tls_client_ca = absl::GetFlag(FLAGS_tls_client_ca);
 
   auto server = getme::server::SmootherServer::Start(options);
   if (!server.ok()) {

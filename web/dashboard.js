@@ -1,6 +1,8 @@
 // getme dashboard: the job list from GET /v1/jobs (polled), one job's progress from its
 // Server-Sent Events (GET /v1/jobs/{id}/events), cancel via POST /v1/jobs/{id}:cancel.
 // JSON follows protobuf's canonical mapping: lowerCamelCase names, 64-bit integers as strings.
+// A server with --auth_tokens_file answers 401 without a bearer token: the page then asks for one
+// and keeps it in sessionStorage (this tab only, gone when it closes).
 'use strict';
 
 const POLL_MS = 1000;
@@ -21,11 +23,54 @@ let jobs = [];
 let selected = null;
 let drawQueued = false;
 
+// ---- Access token ---------------------------------------------------------------------------
+
+const TOKEN_KEY = 'getme-token';
+const token = () => sessionStorage.getItem(TOKEN_KEY) || '';
+
+// fetch() with the bearer token, if any; a 401 asks for a (new) token.
+async function api(path, options = {}) {
+  const headers = { ...(options.headers || {}) };
+  if (token()) headers.Authorization = `Bearer ${token()}`;
+  const response = await fetch(path, { ...options, headers });
+  if (response.status === 401) askForToken();
+  return response;
+}
+
+function askForToken() {
+  $('token-panel').hidden = false;
+  $('token-message').textContent = token()
+    ? 'The server refused this token: enter another.'
+    : 'This server requires an access token.';
+}
+
+$('token-form').addEventListener('submit', (event) => {
+  event.preventDefault();
+  const value = new FormData(event.target).get('token').trim();
+  if (!value) return;
+  sessionStorage.setItem(TOKEN_KEY, value);
+  event.target.reset();
+  $('token-panel').hidden = true;
+  if (selected) {  // reopen its event stream with the token
+    const id = selected.id;
+    if (selected.events) selected.events.close();
+    selected = null;
+    select(id);
+  }
+});
+
+// EventSource cannot send headers: the token goes in the one query parameter the server accepts
+// on event streams (it never logs query strings).
+function eventsUrl(id) {
+  const base = `/v1/jobs/${id}/events`;
+  return token() ? `${base}?access_token=${encodeURIComponent(token())}` : base;
+}
+
 // ---- Job list -------------------------------------------------------------------------------
 
 async function pollJobs() {
   try {
-    const response = await fetch('/v1/jobs');
+    const response = await api('/v1/jobs');
     if (!response.ok) throw new Error(`HTTP ${response.status}`);
     jobs = (await response.json()).jobs || [];
     $('connection').textContent = `${jobs.length} job(s) · updated ${new Date().toLocaleTimeString()}`;
@@ -99,7 +144,7 @@ function openEvents(job) {
   // stream then starts again from the job's latest event. Events that arrive while the trace
   // (the run so far) loads wait in `pending`, so no event falls between the two.
   job.pending = [];
-  const events = new EventSource(`/v1/jobs/${job.id}/events`);
+  const events = new EventSource(eventsUrl(job.id));
   job.events = events;
   events.addEventListener('progress', (message) => {
     const event = JSON.parse(message.data);
@@ -129,7 +174,7 @@ function openEvents(job) {
 async function loadTrace(job) {
   let trace = [];
   try {
-    const response = await fetch(`/v1/jobs/${job.id}/trace`);
+    const response = await api(`/v1/jobs/${job.id}/trace`);
     if (response.ok) trace = (await response.json()).events || [];
   } catch (error) {
     // The stream alone still draws from now on.
@@ -175,7 +220,7 @@ function showState(state, job) {
 
 async function cancelSelected() {
   if (!selected) return;
-  const response = await fetch(`/v1/jobs/${selected.id}:cancel`, { method: 'POST' });
+  const response = await api(`/v1/jobs/${selected.id}:cancel`, { method: 'POST' });
   const body = await response.json();
   if (!response.ok) {
     $('job-summary').textContent = `cancel failed: ${body.code}: ${body.message}`;
@@ -339,7 +384,7 @@ async function submitDemo(event) {
     mesh: demoMesh(cells),
   };
   $('demo-status').textContent = 'submitting…';
-  const response = await fetch('/v1/jobs', {
+  const response = await api('/v1/jobs', {
     method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body),
   });
   const reply = await response.json();

@@ -61,11 +61,16 @@ Options:
                        cancels the job on the server)
   --detach             with --server: queue the job, print its id and return; OUT.vtk may
                        be left out ('getme jobs fetch' writes it later)
+  --token-file FILE    with --server: send the bearer token in FILE to a server with --auth_tokens_file
+                       (default: the GETME_TOKEN environment variable)
+  --tls-ca FILE        connect over TLS, trusting the server certificate this PEM CA signed
+  --tls-cert FILE, --tls-key FILE
+                       client certificate and key (PEM) for a server that requires one
   -h, --help           this text
 
 Exit status: 0 success; 1 failure (input unreadable or not smoothable, output not written,
-server error: "getme: CODE: message"); 2 usage error; 130 interrupted (the output is not
-written).
+server error: "getme: CODE: message", e.g. UNAUTHENTICATED without a valid token); 2 usage
+error; 130 interrupted (the output is not written).
 )";
 
 const char kQualityUsage[] = R"(Usage: getme quality IN [options]
@@ -80,6 +85,11 @@ Options:
   --threads N   worker threads; 0 = all cores (default)
   --json        one JSON object on stdout
   --server HOST:PORT  evaluate on a getme-server instead of in-process
+  --token-file FILE    with --server: send the bearer token in FILE to a server with --auth_tokens_file
+                       (default: the GETME_TOKEN environment variable)
+  --tls-ca FILE        connect over TLS, trusting the server certificate this PEM CA signed
+  --tls-cert FILE, --tls-key FILE
+                       client certificate and key (PEM) for a server that requires one
   -h, --help    this text
 
 Exit status: 0 success; 1 the file cannot be read or holds no volume elements, or the server
@@ -104,6 +114,11 @@ Options:
   --input-format F, --format F, --binary, --ascii, --compress
                        fetch: as for 'getme smooth')
   --json               JSON objects on stdout (one per job, event or result)
+  --token-file FILE    send the bearer token in FILE to a server with --auth_tokens_file
+                       (default: the GETME_TOKEN environment variable)
+  --tls-ca FILE        connect over TLS, trusting the server certificate this PEM CA signed
+  --tls-cert FILE, --tls-key FILE
+                       client certificate and key (PEM) for a server that requires one
   -h, --help           this text
 
 Exit status: 0 success (watch: the job succeeded); 1 failure or the watched job failed or was
@@ -280,6 +295,25 @@ std::function<absl::Status(const std::string&)> ServerFlag(std::string& target) 
   };
 }
 
+void AddAccessFlags(ServerAccessOptions& access, std::map<std::string, FlagSpec>& flags) {
+  flags["--token-file"] = {true, StringFlag(access.token_file)};
+  flags["--tls-ca"] = {true, StringFlag(access.tls_ca)};
+  flags["--tls-cert"] = {true, StringFlag(access.tls_cert)};
+  flags["--tls-key"] = {true, StringFlag(access.tls_key)};
+}
+
+absl::Status CheckAccessFlags(const ServerAccessOptions& access, bool remote) {
+  if (access.tls_cert.empty() != access.tls_key.empty()) {
+    return absl::InvalidArgumentError(
+        "--tls-cert and --tls-key go together (the client certificate and its key)");
+  }
+  if (access.any() && !remote) {
+    return absl::InvalidArgumentError(
+        "--token-file, --tls-ca, --tls-cert and --tls-key need --server HOST:PORT");
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args) {
@@ -318,6 +352,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--detach", {false, SetTrue(options.detach)}},
   };
   AddFileFlags(options.files, binary, ascii, flags);
+  AddAccessFlags(options.access, flags);
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("smooth", args, flags, positionals, options.help);
       !status.ok()) {
@@ -328,6 +363,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
     return status;
   }
   if (max_iterations > 0) options.max_iterations = max_iterations;
+  if (auto s = CheckAccessFlags(options.access, !options.server.empty()); !s.ok()) return s;
   if (options.detach && options.server.empty()) {
     return absl::InvalidArgumentError("--detach needs --server HOST:PORT (a job to detach from)");
   }
@@ -347,19 +383,21 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
 
 absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<std::string>& args) {
   QualityCommandOptions options;
-  const std::map<std::string, FlagSpec> flags = {
+  std::map<std::string, FlagSpec> flags = {
       {"--bins", {true, IntegerFlag<int>("--bins", options.bins, 1, 10000)}},
       {"--threads", {true, IntegerFlag<int>("--threads", options.threads, 0, kMaxThreads)}},
       {"--json", {false, SetTrue(options.json)}},
       {"--server", {true, ServerFlag(options.server)}},
       {"--input-format", {true, InputFormatFlag(options.input_format)}},
   };
+  AddAccessFlags(options.access, flags);
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("quality", args, flags, positionals, options.help);
       !status.ok()) {
     return status;
   }
   if (options.help) return options;
+  if (auto s = CheckAccessFlags(options.access, !options.server.empty()); !s.ok()) return s;
   if (positionals.size() != 1) {
     return absl::InvalidArgumentError(
         absl::StrCat("'getme quality' needs one input file (IN), got ", positionals.size(),
@@ -379,6 +417,7 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
       {"--json", {false, SetTrue(options.json)}},
   };
   AddFileFlags(options.files, binary, ascii, flags);
+  AddAccessFlags(options.access, flags);
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("jobs", args, flags, positionals, options.help);
       !status.ok()) {
@@ -388,6 +427,7 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
   if (absl::Status status = ResolveFileFlags(binary, ascii, options.files); !status.ok()) {
     return status;
   }
+  if (auto s = CheckAccessFlags(options.access, /*remote=*/true); !s.ok()) return s;
   if (positionals.empty()) {
     return absl::InvalidArgumentError(
         "'getme jobs' needs an action: list, watch ID, cancel ID or fetch ID OUT --input IN; "

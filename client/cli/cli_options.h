@@ -28,6 +28,19 @@ struct FileOptions {
   bool compress = false;  // .vtu: zlib-compressed blocks
 };
 
+// How `--server` is reached when it has access control on (docs/reliability-access.md): the bearer
+// token in --token-file (else the GETME_TOKEN environment variable; never a token on the command
+// line, where `ps` shows it), TLS trusting --tls-ca, a client certificate for mutual TLS.
+struct ServerAccessOptions {
+  std::string token_file;
+  std::string tls_ca;
+  std::string tls_cert;  // with tls_key
+  std::string tls_key;
+  bool any() const {
+    return !token_file.empty() || !tls_ca.empty() || !tls_cert.empty() || !tls_key.empty();
+  }
+};
+
 struct SmoothCommandOptions {
   bool help = false;
   std::string input;
@@ -46,6 +59,7 @@ struct SmoothCommandOptions {
   bool quiet = false;
   std::string server;   // HOST:PORT of a getme-server; empty = smooth in-process
   bool detach = false;  // with --server: queue the job, print its id, return (OUT not needed)
+  ServerAccessOptions access;
 };
 
 struct QualityCommandOptions {
@@ -56,6 +70,7 @@ struct QualityCommandOptions {
   int threads = 0;
   bool json = false;
   std::string server;  // HOST:PORT of a getme-server; empty = evaluate in-process
+  ServerAccessOptions access;
 };
 
 enum class JobsAction { kList, kWatch, kCancel, kFetch };
@@ -70,6 +85,7 @@ struct JobsCommandOptions {
   FileOptions files;   // fetch
   std::string server = "127.0.0.1:50051";
   bool json = false;
+  ServerAccessOptions access;
 };
 
 // `getme report IN OUT [--trace T] [--picture-format svg|png] [-o FILE]`: quality histograms

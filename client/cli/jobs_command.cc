@@ -11,6 +11,7 @@
 #include "cli/mesh_files.h"
 #include "cli/progress_printer.h"
 #include "cli/remote_output.h"
+#include "cli/server_access.h"
 #include "cli/text_reports.h"
 #include "remote/smoother_client.h"
 #include "remote/wire_conversion.h"
@@ -133,7 +134,10 @@ int Fetch(remote::SmootherClient& client, const JobsCommandOptions& options) {
 }  // namespace
 
 int RunJobsCommand(const JobsCommandOptions& options) {
-  remote::SmootherClient client(remote::SmootherClient::CreateChannel(options.server));
+  absl::StatusOr<std::shared_ptr<grpc::Channel>> channel =
+      OpenServerChannel(options.server, options.access);
+  if (!channel.ok()) return ReportFailure(channel.status(), options.json, kExitFailure);
+  remote::SmootherClient client(*std::move(channel));
   switch (options.action) {
     case JobsAction::kList:
       return List(client, options);

@@ -8,6 +8,7 @@
 #include "cli/json_events.h"
 #include "cli/json_output.h"
 #include "cli/remote_output.h"
+#include "cli/server_access.h"
 #include "cli/smooth_run.h"
 #include "cli/text_reports.h"
 #include "formats/mesh_file.h"
@@ -74,7 +75,10 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
                formats::FormatDisplayName(run->document.format), run->document.grid.point_count(),
                sent->element_cells.size(), options.server);
 
-  remote::SmootherClient client(remote::SmootherClient::CreateChannel(options.server));
+  absl::StatusOr<std::shared_ptr<grpc::Channel>> channel =
+      OpenServerChannel(options.server, options.access);
+  if (!channel.ok()) return fail(channel.status(), kExitFailure);
+  remote::SmootherClient client(*std::move(channel));
   if (options.detach) return SubmitDetached(client, *sent, job, options);
 
   ProgressSink sink(options, run->trace.get());
@@ -125,7 +129,10 @@ int RunRemoteQualityCommand(const QualityCommandOptions& options) {
   if (!sent.ok()) {
     return ReportFailure(WithInput(options.input, sent.status()), options.json, kExitFailure);
   }
-  remote::SmootherClient client(remote::SmootherClient::CreateChannel(options.server));
+  absl::StatusOr<std::shared_ptr<grpc::Channel>> channel =
+      OpenServerChannel(options.server, options.access);
+  if (!channel.ok()) return ReportFailure(channel.status(), options.json, kExitFailure);
+  remote::SmootherClient client(*std::move(channel));
   absl::StatusOr<v1::QualityReport> wire_report =
       client.EvaluateQuality(sent->mesh, static_cast<std::uint32_t>(options.bins));
   if (!wire_report.ok()) {

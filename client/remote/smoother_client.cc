@@ -116,11 +116,12 @@ SmootherClient::SmootherClient(std::shared_ptr<grpc::ChannelInterface> channel)
     : stub_(v1::Smoother::NewStub(std::move(channel))) {}
 
 std::shared_ptr<grpc::Channel> SmootherClient::CreateChannel(const std::string& target) {
-  grpc::ChannelArguments arguments;
-  // Results come in ~1 MB chunks; the default 4 MB receive limit is plenty, but a server may
-  // choose larger chunks (ResultOptions.nodes_per_chunk), so do not refuse those.
-  arguments.SetMaxReceiveMessageSize(-1);
-  return grpc::CreateCustomChannel(target, grpc::InsecureChannelCredentials(), arguments);
+  return CreateSecureChannel(target, {});
+}
+
+std::shared_ptr<grpc::Channel> SmootherClient::CreateChannel(const std::string& target,
+                                                             const ChannelSecurity& security) {
+  return CreateSecureChannel(target, security);
 }
 
 absl::StatusOr<RemoteSmoothResult> SmootherClient::Smooth(const v1::Mesh& mesh,

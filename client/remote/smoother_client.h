@@ -13,6 +13,7 @@
 #include "getme/v1/smoother.pb.h"
 #include "grpcpp/channel.h"
 #include "remote/call_options.h"
+#include "remote/channel_security.h"
 
 namespace getme::remote {
 
@@ -34,6 +35,9 @@ class SmootherClient {
 
   // An insecure channel to "host:port" (the service listens on loopback or a trusted network).
   static std::shared_ptr<grpc::Channel> CreateChannel(const std::string& target);
+  // A channel with TLS and/or a bearer token, for a server with access control on.
+  static std::shared_ptr<grpc::Channel> CreateChannel(const std::string& target,
+                                                      const ChannelSecurity& security);
 
   // One call: uploads `mesh`, calls `on_progress` for each progress event while it is smoothed,
   // and returns the result. Cancelling (CallOptions.cancel) or the timeout stops the job.

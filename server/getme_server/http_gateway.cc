@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
@@ -31,6 +32,9 @@ constexpr absl::Duration kStreamPoll = absl::Milliseconds(100);
 constexpr absl::Duration kStreamKeepAlive = absl::Seconds(2);
 
 const char kJson[] = "application/json";
+// EventSource cannot send headers: the dashboard's event streams carry the token in this query
+// parameter (RFC 6750's name), accepted on /events only. Logs show paths without query strings.
+const char kTokenParameter[] = "access_token";
 const std::regex kJobPath(R"(/v1/jobs/([^/:]+)(:cancel|/events|/report|/trace)?)");
 
 void ReplyError(httplib::Response& res, const absl::Status& status) {
@@ -103,6 +107,19 @@ bool WriteJobEvents(const Job& job, ProgressFanout::Watcher& watcher,
   return true;
 }
 
+// Routes that need a caller when authentication is on; probes and dashboard files stay open (the
+// dashboard asks for a token itself).
+bool NeedsCaller(const std::string& path) {
+  return absl::StartsWith(path, "/v1/") || path == "/metrics";
+}
+
+std::unique_ptr<httplib::Server> MakeHttpServer(const ServerOptions& options) {
+  if (options.tls_cert.empty()) return std::make_unique<httplib::Server>();
+  return std::make_unique<httplib::SSLServer>(
+      options.tls_cert.c_str(), options.tls_key.c_str(),
+      options.tls_client_ca.empty() ? nullptr : options.tls_client_ca.c_str());
+}
+
 absl::StatusOr<std::pair<std::string, int>> SplitHostPort(const std::string& address) {
   const std::size_t colon = address.rfind(':');
   int port = -1;
@@ -122,12 +139,23 @@ absl::StatusOr<std::pair<std::string, int>> SplitHostPort(const std::string& add
 }  // namespace
 
 HttpGateway::HttpGateway(JobRegistry& registry, const ServerOptions& options,
-                         ServerMetrics& metrics)
+                         ServerMetrics& metrics, const Authenticator& authenticator)
     : registry_(registry),
       options_(options),
       metrics_(metrics),
-      http_(std::make_unique<httplib::Server>()) {
+      authenticator_(authenticator),
+      http_(MakeHttpServer(options)) {
   AddRoutes();
+}
+
+absl::StatusOr<std::string> HttpGateway::CallerOf(const httplib::Request& req) const {
+  if (req.has_header("Authorization")) {
+    return authenticator_.Authenticate(req.get_header_value("Authorization"));
+  }
+  if (absl::EndsWith(req.path, "/events") && req.has_param(kTokenParameter)) {
+    return authenticator_.AuthenticateToken(req.get_param_value(kTokenParameter));
+  }
+  return authenticator_.Authenticate(std::nullopt);
 }
 
 HttpGateway::~HttpGateway() { Stop(); }
@@ -136,6 +164,10 @@ absl::Status HttpGateway::Start(const std::string& address) {
   absl::StatusOr<std::pair<std::string, int>> host_port = SplitHostPort(address);
   if (!host_port.ok()) return host_port.status();
   const auto& [host, port] = *host_port;
+  if (!http_->is_valid()) {
+    return absl::InvalidArgumentError(
+        "the HTTP gateway cannot load --tls_cert, --tls_key or --tls_client_ca");
+  }
   http_->new_task_queue = [] { return new httplib::ThreadPool(kRequestThreads); };
   if (port == 0) {
     port_ = http_->bind_to_any_port(host);
@@ -162,6 +194,12 @@ void HttpGateway::Stop() {
     http_->stop();
     listener_.join();
   }
+}
+
+absl::StatusOr<std::shared_ptr<Job>> HttpGateway::FindOwnJob(const httplib::Request& req) const {
+  absl::StatusOr<std::string> caller = CallerOf(req);
+  if (!caller.ok()) return caller.status();
+  return registry_.Find(req.matches[1], *caller);
 }
 
 void HttpGateway::AddRoutes() {
@@ -209,6 +247,16 @@ void HttpGateway::AddRoutes() {
                 job_id.empty() ? "" : " job=", job_id, req.remote_addr);
   });
 
+  // Before routing, so no handler (present or future) under /v1/ runs for an unknown caller.
+  http_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    if (!NeedsCaller(req.path)) return httplib::Server::HandlerResponse::Unhandled;
+    absl::StatusOr<std::string> caller = CallerOf(req);
+    if (caller.ok()) return httplib::Server::HandlerResponse::Unhandled;
+    res.set_header("WWW-Authenticate", "Bearer");
+    ReplyError(res, caller.status());
+    return httplib::Server::HandlerResponse::Handled;
+  });
+
   http_->Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
     res.set_content("{\"status\": \"SERVING\"}", kJson);
   });
@@ -221,16 +269,21 @@ void HttpGateway::AddRoutes() {
     }
   });
   http_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
-    JobsNow now{registry_.List(), registry_.QueuedCount(), options_.workers, registry_.accepting()};
+    JobsNow now{registry_.ListAllOwners(), registry_.QueuedCount(), options_.workers,
+                registry_.accepting()};
     res.set_content(PrometheusText(metrics_.Read(), now), "text/plain; version=0.0.4");
   });
 
-  http_->Get("/v1/jobs", [this](const httplib::Request&, httplib::Response& res) {
+  http_->Get("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) {
+    absl::StatusOr<std::string> caller = CallerOf(req);
+    if (!caller.ok()) return ReplyError(res, caller.status());
     v1::ListJobsResponse list;
-    for (const auto& job : registry_.List()) *list.add_jobs() = job->Describe();
+    for (const auto& job : registry_.List(*caller)) *list.add_jobs() = job->Describe();
     ReplyJson(res, list);
   });
   http_->Post("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) {
+    absl::StatusOr<std::string> caller = CallerOf(req);
+    if (!caller.ok()) return ReplyError(res, caller.status());
     v1::CreateJobRequest request;
     if (auto s = FromJson(req.body, request); !s.ok()) return ReplyError(res, s);
     v1::SmoothHeader header;
@@ -239,25 +292,26 @@ void HttpGateway::AddRoutes() {
     absl::StatusOr<std::shared_ptr<Job>> job =
         CreateJob(header, std::move(*request.mutable_mesh()), registry_, options_, &metrics_);
     if (!job.ok()) return ReplyError(res, job.status());
-    if (auto s = registry_.Submit(*job); !s.ok()) return ReplyError(res, s);
-    spdlog::info("job={} queued by HTTP POST /v1/jobs from {}", (*job)->id(), req.remote_addr);
+    if (auto s = registry_.Submit(*job, *caller); !s.ok()) return ReplyError(res, s);
+    spdlog::info("job={} queued by HTTP POST /v1/jobs from {}{}{}", (*job)->id(), req.remote_addr,
+                 caller->empty() ? "" : " owner=", *caller);
     ReplyJson(res, (*job)->Describe());
   });
   http_->Get(R"(/v1/jobs/([^/:]+))", [this](const httplib::Request& req, httplib::Response& res) {
-    absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);
+    absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
     if (!job.ok()) return ReplyError(res, job.status());
     ReplyJson(res, (*job)->Describe());
   });
   http_->Post(R"(/v1/jobs/([^/:]+):cancel)",
               [this](const httplib::Request& req, httplib::Response& res) {
-                absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);
+                absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
                 if (!job.ok()) return ReplyError(res, job.status());
                 (*job)->Cancel(absl::StrCat("HTTP cancel from ", req.remote_addr));
                 ReplyJson(res, (*job)->Describe());
               });
   http_->Get(R"(/v1/jobs/([^/:]+)/report)", [this](const httplib::Request& req,
                                                    httplib::Response& res) {
-    absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);
+    absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
     if (!job.ok()) return ReplyError(res, job.status());
     std::optional<v1::SmoothResult> summary = (*job)->Summary();
     if (!summary.has_value()) {
@@ -271,7 +325,7 @@ void HttpGateway::AddRoutes() {
   });
   http_->Get(
       R"(/v1/jobs/([^/:]+)/trace)", [this](const httplib::Request& req, httplib::Response& res) {
-        absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);
+        absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
         if (!job.ok()) return ReplyError(res, job.status());
         std::vector<std::string> events;
         for (const v1::ProgressEvent& event : (*job)->Trace()) {
@@ -281,7 +335,7 @@ void HttpGateway::AddRoutes() {
       });
   http_->Get(R"(/v1/jobs/([^/:]+)/events)",
              [this](const httplib::Request& req, httplib::Response& res) {
-               absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(req.matches[1]);
+               absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
                if (!job.ok()) return ReplyError(res, job.status());
                if (open_streams_.fetch_add(1) >= kMaxEventStreams) {
                  open_streams_.fetch_sub(1);

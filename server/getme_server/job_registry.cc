@@ -38,7 +38,7 @@ std::int64_t JobRegistry::QueuedCountLocked() const {
                        [](const auto& job) { return job->state() == v1::JOB_STATE_QUEUED; });
 }
 
-absl::Status JobRegistry::Submit(std::shared_ptr<Job> job) {
+absl::Status JobRegistry::Submit(std::shared_ptr<Job> job, std::string owner) {
   {
     std::lock_guard lock(mutex_);
     if (!accepting_) {
@@ -51,7 +51,7 @@ absl::Status JobRegistry::Submit(std::shared_ptr<Job> job) {
           absl::StrCat("the job queue is full: ", max_queued_jobs_,
                        " jobs are waiting for a worker (--max_queued_jobs); retry later"));
     }
-    jobs_[job->id()] = job;
+    jobs_[job->id()] = {job, std::move(owner)};
     submission_order_.push_back(job);
     queue_.push_back(std::move(job));
   }
@@ -59,17 +59,28 @@ absl::Status JobRegistry::Submit(std::shared_ptr<Job> job) {
   return absl::OkStatus();
 }
 
-absl::StatusOr<std::shared_ptr<Job>> JobRegistry::Find(const std::string& id) const {
+absl::StatusOr<std::shared_ptr<Job>> JobRegistry::Find(const std::string& id,
+                                                       absl::string_view owner) const {
   std::lock_guard lock(mutex_);
   auto it = jobs_.find(id);
-  if (it == jobs_.end()) {
+  if (it == jobs_.end() || it->second.owner != owner) {
     return absl::NotFoundError(
         absl::StrCat("no job with id '", id, "' (unknown, or forgotten after its result expired)"));
   }
-  return it->second;
+  return it->second.job;
 }
 
-std::vector<std::shared_ptr<Job>> JobRegistry::List() const {
+std::vector<std::shared_ptr<Job>> JobRegistry::List(absl::string_view owner) const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::shared_ptr<Job>> jobs;
+  for (auto it = submission_order_.rbegin(); it != submission_order_.rend(); ++it) {
+    auto entry = jobs_.find((*it)->id());
+    if (entry != jobs_.end() && entry->second.owner == owner) jobs.push_back(*it);
+  }
+  return jobs;
+}
+
+std::vector<std::shared_ptr<Job>> JobRegistry::ListAllOwners() const {
   std::lock_guard lock(mutex_);
   return {submission_order_.rbegin(), submission_order_.rend()};
 }
@@ -120,7 +131,7 @@ bool JobRegistry::WaitUntilNoneRunning(absl::Time deadline) const {
 }
 
 void JobRegistry::CancelAll(absl::string_view reason) {
-  for (const auto& job : List()) job->Cancel(reason);
+  for (const auto& job : ListAllOwners()) job->Cancel(reason);
 }
 
 void JobRegistry::StopWorkers() {

@@ -17,8 +17,10 @@
 
 namespace getme::server {
 
-// All jobs of the server by id, and the bounded queue the workers take them from. A background
-// sweeper drops results nobody fetched within the time to live.
+// All jobs of the server by id with the owner that created each, and the bounded queue the
+// workers take them from. A background sweeper drops results nobody fetched within the time to
+// live. Callers see only their own jobs: another owner's job id is answered exactly like an
+// unknown one, so ids do not leak (with authentication off everyone is the same owner).
 class JobRegistry {
  public:
   JobRegistry(int max_queued_jobs, absl::Duration result_ttl);
@@ -29,12 +31,15 @@ class JobRegistry {
   std::string NewJobId();
   // Queues the job: RESOURCE_EXHAUSTED at once when max_queued_jobs are already waiting,
   // UNAVAILABLE once the server stopped accepting.
-  absl::Status Submit(std::shared_ptr<Job> job);
-  // NOT_FOUND for ids the registry does not know (never issued, or forgotten after the TTL).
-  absl::StatusOr<std::shared_ptr<Job>> Find(const std::string& id) const;
-  std::vector<std::shared_ptr<Job>> List() const;  // newest first
-  std::int64_t QueuedCount() const;                // jobs waiting for a worker
-  bool accepting() const;                          // false once shutdown started
+  absl::Status Submit(std::shared_ptr<Job> job, std::string owner = {});
+  // NOT_FOUND for ids the registry does not know (never issued, or forgotten after the TTL) and
+  // for jobs of another owner, with the same message.
+  absl::StatusOr<std::shared_ptr<Job>> Find(const std::string& id, absl::string_view owner) const;
+  std::vector<std::shared_ptr<Job>> List(absl::string_view owner) const;  // newest first
+  // Every owner's jobs, for server-wide figures (metrics) and shutdown.
+  std::vector<std::shared_ptr<Job>> ListAllOwners() const;
+  std::int64_t QueuedCount() const;  // jobs waiting for a worker
+  bool accepting() const;            // false once shutdown started
 
   // Blocks until a queued job is available (returned) or the workers are stopped (nullptr).
   std::shared_ptr<Job> TakeNextQueued();
@@ -55,7 +60,11 @@ class JobRegistry {
 
   mutable std::mutex mutex_;
   std::condition_variable queue_changed_;
-  absl::flat_hash_map<std::string, std::shared_ptr<Job>> jobs_;
+  struct OwnedJob {
+    std::shared_ptr<Job> job;
+    std::string owner;
+  };
+  absl::flat_hash_map<std::string, OwnedJob> jobs_;
   std::vector<std::shared_ptr<Job>> submission_order_;
   std::deque<std::shared_ptr<Job>> queue_;
   bool accepting_ = true;

@@ -4,13 +4,16 @@
 #include <mutex>
 #include <thread>
 
+#include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "getme_server/authenticator.h"
 #include "getme_server/http_gateway.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/rpc_metrics_interceptor.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/smoother_service.h"
+#include "getme_server/tls_files.h"
 #include "getme_server/worker_pool.h"
 #include "grpcpp/ext/proto_server_reflection_plugin.h"
 #include "grpcpp/health_check_service_interface.h"
@@ -44,12 +47,32 @@ absl::Status CheckOptions(const ServerOptions& options) {
   return absl::OkStatus();
 }
 
+// Loopback and Unix-socket listeners only reach this machine: tokens in plaintext stay on it.
+bool IsLocalAddress(absl::string_view address) {
+  if (absl::StartsWith(address, "unix:")) return true;
+  const absl::string_view host = address.substr(0, address.rfind(':'));
+  return absl::StartsWith(host, "127.") || host == "localhost" || host == "[::1]" || host == "::1";
+}
+
+std::shared_ptr<grpc::ServerCredentials> GrpcCredentials(const std::optional<TlsFiles>& tls) {
+  if (!tls.has_value()) return grpc::InsecureServerCredentials();
+  grpc::SslServerCredentialsOptions ssl(
+      tls->client_ca_pem.empty() ? GRPC_SSL_DONT_REQUEST_CLIENT_CERTIFICATE
+                                 : GRPC_SSL_REQUEST_AND_REQUIRE_CLIENT_CERTIFICATE_AND_VERIFY);
+  ssl.pem_root_certs = tls->client_ca_pem;
+  ssl.pem_key_cert_pairs.push_back({tls->private_key_pem, tls->cert_chain_pem});
+  return grpc::SslServerCredentials(ssl);
+}
+
 class SmootherServerImpl final : public SmootherServer {
  public:
-  explicit SmootherServerImpl(const ServerOptions& options)
-      : registry_(options.max_queued_jobs, options.result_ttl),
+  SmootherServerImpl(const ServerOptions& options, Authenticator authenticator,
+                     std::optional<TlsFiles> tls)
+      : authenticator_(std::move(authenticator)),
+        tls_(std::move(tls)),
+        registry_(options.max_queued_jobs, options.result_ttl),
         workers_(registry_, options.workers),
-        service_(registry_, options, &metrics_) {}
+        service_(registry_, options, &metrics_, authenticator_) {}
 
   ~SmootherServerImpl() override { Shutdown(absl::ZeroDuration()); }
 
@@ -57,7 +80,7 @@ class SmootherServerImpl final : public SmootherServer {
     grpc::EnableDefaultHealthCheckService(true);
     grpc::reflection::InitProtoReflectionServerBuilderPlugin();
     grpc::ServerBuilder builder;
-    builder.AddListeningPort(address, grpc::InsecureServerCredentials(), &port_);
+    builder.AddListeningPort(address, GrpcCredentials(tls_), &port_);
     builder.SetMaxReceiveMessageSize(kMaxReceiveMessageBytes);
     builder.RegisterService(&service_);
     std::vector<std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>> counters;
@@ -76,7 +99,7 @@ class SmootherServerImpl final : public SmootherServer {
   // After Listen: the gateway serves the registry the gRPC service already works on.
   absl::Status ListenHttp(const ServerOptions& options) {
     if (options.http_listen.empty()) return absl::OkStatus();
-    auto gateway = std::make_unique<HttpGateway>(registry_, options, metrics_);
+    auto gateway = std::make_unique<HttpGateway>(registry_, options, metrics_, authenticator_);
     absl::Status status = gateway->Start(options.http_listen);
     if (!status.ok()) {
       if (!options.http_listen_optional) return status;
@@ -90,6 +113,7 @@ class SmootherServerImpl final : public SmootherServer {
 
   int port() const override { return port_; }
   int http_port() const override { return http_ == nullptr ? 0 : http_->port(); }
+  bool tls() const { return tls_.has_value(); }
 
   void Shutdown(absl::Duration grace) override {
     std::unique_lock lock(mutex_);
@@ -137,6 +161,8 @@ class SmootherServerImpl final : public SmootherServer {
     spdlog::info("shutdown complete");
   }
 
+  const Authenticator authenticator_;  // before the front ends, which keep a reference
+  const std::optional<TlsFiles> tls_;
   ServerMetrics metrics_;  // before the registry: jobs count into it until they are destroyed
   JobRegistry registry_;
   WorkerPool workers_;
@@ -156,17 +182,42 @@ class SmootherServerImpl final : public SmootherServer {
 absl::StatusOr<std::unique_ptr<SmootherServer>> SmootherServer::Start(
     const ServerOptions& options) {
   if (auto s = CheckOptions(options); !s.ok()) return s;
-  auto server = std::make_unique<SmootherServerImpl>(options);
+  absl::StatusOr<std::optional<TlsFiles>> tls = LoadTlsFiles(options);
+  if (!tls.ok()) return tls.status();
+  Authenticator authenticator;
+  if (!options.auth_tokens_file.empty()) {
+    absl::StatusOr<AccessTokens> tokens = AccessTokens::ReadFile(options.auth_tokens_file);
+    if (!tokens.ok()) return tokens.status();
+    spdlog::info("authentication on: {} bearer token(s) from --auth_tokens_file", tokens->size());
+    authenticator = Authenticator(*std::move(tokens));
+  }
+  auto server =
+      std::make_unique<SmootherServerImpl>(options, std::move(authenticator), *std::move(tls));
   if (auto s = server->Listen(options.listen); !s.ok()) return s;
   if (auto s = server->ListenHttp(options); !s.ok()) return s;
+  if (!options.auth_tokens_file.empty() && !server->tls()) {
+    for (const std::string& address : {options.listen, options.http_listen}) {
+      if (!address.empty() && !IsLocalAddress(address)) {
+        spdlog::warn(
+            "bearer tokens are on without TLS and {} is not a loopback address: tokens and "
+            "meshes cross the network in plaintext (add --tls_cert and --tls_key)",
+            address);
+      }
+    }
+  }
   spdlog::info(
       "getme-server listening on port {} (workers={} threads_per_job={} "
-      "max_queued_jobs={} max_elements={} result_ttl={})",
+      "max_queued_jobs={} max_elements={} result_ttl={} tls={} auth={})",
       server->port(), options.workers, options.threads_per_job, options.max_queued_jobs,
-      options.max_elements, absl::FormatDuration(options.result_ttl));
+      options.max_elements, absl::FormatDuration(options.result_ttl),
+      !server->tls()                  ? "off"
+      : options.tls_client_ca.empty() ? "on"
+                                      : "mtls",
+      options.auth_tokens_file.empty() ? "off" : "tokens");
   if (server->http_port() != 0) {
     // Not "listening on port": scripts find the gRPC port by that phrase.
-    spdlog::info("HTTP gateway and dashboard at http://{}/ (port {})",
+    spdlog::info("HTTP gateway and dashboard at {}://{}/ (port {})",
+                 server->tls() ? "https" : "http",
                  options.http_listen.substr(0, options.http_listen.rfind(':')) + ":" +
                      std::to_string(server->http_port()),
                  server->http_port());

@@ -25,6 +25,15 @@ struct ServerOptions {
   // event of every phase and of the job always goes out).
   absl::Duration progress_interval = absl::Milliseconds(100);
   absl::Duration shutdown_grace = absl::Seconds(30);  // SIGTERM: running jobs may finish this long
+
+  // Access control (docs/reliability-access.md); empty strings = off.
+  // Bearer tokens (AccessTokens' file format); each job belongs to the owner of its token.
+  std::string auth_tokens_file;
+  // TLS on both listeners: PEM certificate chain and its unencrypted private key, both or neither.
+  std::string tls_cert;
+  std::string tls_key;
+  // PEM CA certificate(s): clients must present a certificate one of them signed (mTLS).
+  std::string tls_client_ca;
 };
 
 }  // namespace getme::server

@@ -112,6 +112,15 @@ grpc::Status StreamResult(JobResult& result, Writer* writer) {
 
 }  // namespace
 
+absl::StatusOr<std::string> SmootherService::CallerOf(const grpc::ServerContext& context) const {
+  const auto& metadata = context.client_metadata();
+  std::optional<absl::string_view> authorization;
+  if (auto it = metadata.find("authorization"); it != metadata.end()) {
+    authorization = absl::string_view(it->second.data(), it->second.size());
+  }
+  return authenticator_.Authenticate(authorization);
+}
+
 absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::SmoothHeader& header,
                                                                 v1::Mesh mesh) {
   return server::CreateJob(header, std::move(mesh), registry_, options_, metrics_);
@@ -120,6 +129,8 @@ absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::Smooth
 grpc::Status SmootherService::Smooth(
     grpc::ServerContext* context,
     grpc::ServerReaderWriter<v1::SmoothResponse, v1::SmoothRequest>* stream) {
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
   v1::SmoothHeader header;
   v1::Mesh mesh;
   if (auto s = ReadUpload<v1::SmoothRequest>(context, stream, options_.max_elements, header, mesh);
@@ -130,8 +141,9 @@ grpc::Status SmootherService::Smooth(
   if (!job.ok()) return ToGrpcStatus(job.status());
   // Watch before queueing, so this caller sees every event from the first one.
   std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
-  if (auto s = registry_.Submit(*job); !s.ok()) return ToGrpcStatus(s);
-  spdlog::info("job={} queued by Smooth from {}", (*job)->id(), context->peer());
+  if (auto s = registry_.Submit(*job, *owner); !s.ok()) return ToGrpcStatus(s);
+  spdlog::info("job={} queued by Smooth from {}{}{}", (*job)->id(), context->peer(),
+               owner->empty() ? "" : " owner=", *owner);
 
   const WatchEnd end = ForwardProgress(context, *watcher, [stream](const v1::ProgressEvent& e) {
     v1::SmoothResponse response;
@@ -156,6 +168,8 @@ grpc::Status SmootherService::Smooth(
 grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
                                         grpc::ServerReader<v1::SmoothRequest>* reader,
                                         v1::Job* job_out) {
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
   v1::SmoothHeader header;
   v1::Mesh mesh;
   if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements, header, mesh);
@@ -164,8 +178,9 @@ grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
   }
   absl::StatusOr<std::shared_ptr<Job>> job = CreateJob(header, std::move(mesh));
   if (!job.ok()) return ToGrpcStatus(job.status());
-  if (auto s = registry_.Submit(*job); !s.ok()) return ToGrpcStatus(s);
-  spdlog::info("job={} queued by SubmitJob from {}", (*job)->id(), context->peer());
+  if (auto s = registry_.Submit(*job, *owner); !s.ok()) return ToGrpcStatus(s);
+  spdlog::info("job={} queued by SubmitJob from {}{}{}", (*job)->id(), context->peer(),
+               owner->empty() ? "" : " owner=", *owner);
   *job_out = (*job)->Describe();
   return grpc::Status::OK;
 }
@@ -173,7 +188,9 @@ grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
 grpc::Status SmootherService::WatchJob(grpc::ServerContext* context,
                                        const v1::WatchJobRequest* request,
                                        grpc::ServerWriter<v1::ProgressEvent>* writer) {
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
   // A watcher leaving does not cancel the job: that is what CancelJob is for.
@@ -189,9 +206,11 @@ grpc::Status SmootherService::WatchJob(grpc::ServerContext* context,
   return grpc::Status(grpc::StatusCode::CANCELLED, "the watcher went away");
 }
 
-grpc::Status SmootherService::GetJob(grpc::ServerContext*, const v1::GetJobRequest* request,
+grpc::Status SmootherService::GetJob(grpc::ServerContext* context, const v1::GetJobRequest* request,
                                      v1::Job* job_out) {
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   *job_out = (*job)->Describe();
   return grpc::Status::OK;
@@ -199,22 +218,29 @@ grpc::Status SmootherService::GetJob(grpc::ServerContext*, const v1::GetJobReque
 
 grpc::Status SmootherService::CancelJob(grpc::ServerContext* context,
                                         const v1::CancelJobRequest* request, v1::Job* job_out) {
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   (*job)->Cancel(absl::StrCat("CancelJob from ", context->peer()));
   *job_out = (*job)->Describe();
   return grpc::Status::OK;
 }
 
-grpc::Status SmootherService::ListJobs(grpc::ServerContext*, const v1::ListJobsRequest*,
+grpc::Status SmootherService::ListJobs(grpc::ServerContext* context, const v1::ListJobsRequest*,
                                        v1::ListJobsResponse* response) {
-  for (const auto& job : registry_.List()) *response->add_jobs() = job->Describe();
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
+  for (const auto& job : registry_.List(*owner)) *response->add_jobs() = job->Describe();
   return grpc::Status::OK;
 }
 
-grpc::Status SmootherService::GetResult(grpc::ServerContext*, const v1::GetResultRequest* request,
+grpc::Status SmootherService::GetResult(grpc::ServerContext* context,
+                                        const v1::GetResultRequest* request,
                                         grpc::ServerWriter<v1::SmoothResponse>* writer) {
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id());
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   absl::StatusOr<JobResult> result = (*job)->TakeResult();
   if (!result.ok()) return ToGrpcStatus(result.status());
@@ -225,6 +251,8 @@ grpc::Status SmootherService::GetResult(grpc::ServerContext*, const v1::GetResul
 grpc::Status SmootherService::EvaluateQuality(
     grpc::ServerContext* context, grpc::ServerReader<v1::EvaluateQualityRequest>* reader,
     v1::QualityReport* report) {
+  absl::StatusOr<std::string> owner = CallerOf(*context);
+  if (!owner.ok()) return ToGrpcStatus(owner.status());
   v1::EvaluateQualityHeader header;
   v1::Mesh wire;
   if (auto s = ReadUpload<v1::EvaluateQualityRequest>(context, reader, options_.max_elements,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "getme/v1/smoother.grpc.pb.h"
+#include "getme_server/authenticator.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
@@ -9,10 +10,13 @@ namespace getme::server {
 
 // The getme.v1.Smoother handlers (synchronous API). They translate wire messages to engine
 // types and back, and leave queueing, running and progress fan-out to the registry and jobs.
+// Every call first authenticates its caller (metadata `authorization: Bearer <token>` when
+// authentication is on) and sees only that caller's jobs.
 class SmootherService final : public v1::Smoother::Service {
  public:
-  SmootherService(JobRegistry& registry, const ServerOptions& options, ServerMetrics* metrics)
-      : registry_(registry), options_(options), metrics_(metrics) {}
+  SmootherService(JobRegistry& registry, const ServerOptions& options, ServerMetrics* metrics,
+                  const Authenticator& authenticator)
+      : registry_(registry), options_(options), metrics_(metrics), authenticator_(authenticator) {}
 
   grpc::Status Smooth(
       grpc::ServerContext* context,
@@ -35,10 +39,12 @@ class SmootherService final : public v1::Smoother::Service {
 
  private:
   absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v1::Mesh mesh);
+  absl::StatusOr<std::string> CallerOf(const grpc::ServerContext& context) const;
 
   JobRegistry& registry_;
   const ServerOptions options_;
   ServerMetrics* const metrics_;
+  const Authenticator& authenticator_;
 };
 
 }  // namespace getme::server

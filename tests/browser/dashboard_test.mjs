@@ -30,10 +30,10 @@ function check(name, ok, detail = '') {
 }
 
 // getme-server on free loopback ports; resolves with the dashboard URL from its log.
-function startServer() {
-  const log = fs.createWriteStream(path.join(outputDir, 'server.log'));
+function startServer(extraArgs = [], logName = 'server.log') {
+  const log = fs.createWriteStream(path.join(outputDir, logName));
   const server = spawn(serverBinary, ['--listen=127.0.0.1:0', '--http_listen=127.0.0.1:0',
-    '--workers=2', '--progress_interval=50ms', '--shutdown_grace=1s'],
+    '--workers=2', '--progress_interval=50ms', '--shutdown_grace=1s', ...extraArgs],
   { stdio: ['ignore', 'ignore', 'pipe'] });
   const url = new Promise((resolve, reject) => {
     let text = '';
@@ -63,6 +63,7 @@ async function submitDemoJob(page, { cells, method, simultaneous, sequential }) 
 }
 
 const { server, url: serverUrl } = startServer();
+let authServer = null;
 const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'getme-chromium-'));
 let context;
 try {
@@ -139,11 +140,36 @@ try {
     later);
   check('after a reload its chart is drawn from the start (trace)', true);
   await page.screenshot({ path: path.join(outputDir, 'dashboard-reloaded.png'), fullPage: true });
+
+  // 4. A server with bearer tokens: the page asks for one, then lists, runs and streams a job
+  // (the event stream's token travels as a query parameter).
+  const token = 'browser-test-token-0123456789';
+  const tokensFile = path.join(outputDir, 'tokens.txt');
+  fs.writeFileSync(tokensFile, `browser:${token}\n`);
+  const started = startServer([`--auth_tokens_file=${tokensFile}`], 'server-auth.log');
+  authServer = started.server;
+  const authPage = await context.newPage();
+  authPage.setDefaultTimeout(60000);
+  await authPage.goto(await started.url);
+  await authPage.waitForSelector('#token-panel:not([hidden])');
+  check('with auth on the page asks for a token', true);
+  await authPage.fill('input[name=token]', token);
+  await authPage.click('#token-form button');
+  await authPage.waitForSelector('#token-panel', { state: 'hidden' });
+  const authJob = await submitDemoJob(authPage, {
+    cells: 4, method: 'METHOD_SIMULTANEOUS', simultaneous: 50, sequential: 1,
+  });
+  await authPage.waitForFunction(() => document.getElementById('job-state').textContent === 'SUCCEEDED');
+  await authPage.waitForSelector('#histogram[data-ready="true"]');
+  check('with a token the page runs a job and streams its events', true, authJob);
+  const unauthorized = await fetch(`${await started.url}v1/jobs`);
+  check('without a token the API answers 401', unauthorized.status === 401, String(unauthorized.status));
 } catch (error) {
   check('browser run', false, error.stack || String(error));
 } finally {
   if (context) await context.close();
   server.kill('SIGTERM');
+  if (authServer) authServer.kill('SIGTERM');
   fs.rmSync(userDataDir, { recursive: true, force: true });
 }
 console.log(`browser_dashboard: ${passed} passed, ${failed} failed`);
