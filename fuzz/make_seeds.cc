@@ -13,6 +13,7 @@
 #include "getme/v1/smoother.pb.h"
 #include "google/protobuf/io/coded_stream.h"
 #include "google/protobuf/io/zero_copy_stream_impl_lite.h"
+#include "google/protobuf/util/json_util.h"
 #include "remote/wire_mesh.h"
 #include "spdlog/spdlog.h"
 
@@ -100,6 +101,17 @@ std::string WireUpload(const v1::Mesh& mesh) {
   return out;
 }
 
+// The body of HTTP POST /v1/jobs a browser sends for the mesh (docs/http.md).
+std::string HttpJobBody(const v1::Mesh& mesh) {
+  v1::CreateJobRequest request;
+  request.mutable_parameters()->set_simultaneous_max_iterations(5);
+  request.mutable_result_options()->set_histogram_bins(10);
+  *request.mutable_mesh() = mesh;
+  std::string json;
+  if (!google::protobuf::util::MessageToJsonString(request, &json).ok()) return {};
+  return json;
+}
+
 int Run(const fs::path& out, const std::vector<std::string>& inputs) {
   spdlog::set_level(spdlog::level::off);
   int written = 0;
@@ -122,6 +134,7 @@ int Run(const fs::path& out, const std::vector<std::string>& inputs) {
     }
     if (absl::StatusOr<remote::VtkWireMesh> wire = remote::ToWireMesh(document->grid); wire.ok()) {
       written += Write(out / "wire_mesh" / absl::StrCat(stem, ".upload"), WireUpload(wire->mesh));
+      written += Write(out / "http_job" / absl::StrCat(stem, ".json"), HttpJobBody(wire->mesh));
     }
   }
   std::printf("getme-fuzz-seeds: %d seed files in %s\n", written, out.string().c_str());

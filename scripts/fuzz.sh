@@ -33,7 +33,7 @@ seconds="${1:-60}"
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -eq 0 ]; then
   die "SECONDS_PER_TARGET must be a positive integer"
 fi
-read -ra targets <<< "${GETME_FUZZ_TARGETS:-vtk vtu gmsh medit mesh_file engine_mesh wire_mesh}"
+read -ra targets <<< "${GETME_FUZZ_TARGETS:-vtk vtu gmsh medit mesh_file engine_mesh wire_mesh http_job}"
 max_seed_kb="${GETME_FUZZ_MAX_SEED_KB:-100}"
 shared_meshes="${GETME_SHARED_MESHES:-$GETME_ROOT/../shared/meshes}"
 build_dir="$(build_dir_for address)"
@@ -72,12 +72,16 @@ for input in "$GETME_ROOT"/tests/data/fuzz-regressions/*; do
     cp "$input" "$fuzz_dir/seeds/$target/"
   done
 done
+# HTTP POST /v1/jobs bodies that once broke the gateway.
+mkdir -p "$fuzz_dir/seeds/http_job"
+cp "$GETME_ROOT"/tests/data/fuzz-regressions/http/* "$fuzz_dir/seeds/http_job/" 2> /dev/null || true
 
 # dictionary_for TARGET: the -dict= option of a target (the generic ones get every format's words).
 dictionary_for() {
   local dictionaries="$GETME_ROOT/fuzz/dictionaries"
   case "$1" in
     vtk | vtu | gmsh | medit) echo "-dict=$dictionaries/$1.dict" ;;
+    http_job) echo "-dict=$dictionaries/json.dict" ;;
     mesh_file | engine_mesh)
       cat "$dictionaries"/*.dict > "$fuzz_dir/all.dict"
       echo "-dict=$fuzz_dir/all.dict"

@@ -284,13 +284,8 @@ void HttpGateway::AddRoutes() {
   http_->Post("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) {
     absl::StatusOr<std::string> caller = CallerOf(req);
     if (!caller.ok()) return ReplyError(res, caller.status());
-    v1::CreateJobRequest request;
-    if (auto s = FromJson(req.body, request); !s.ok()) return ReplyError(res, s);
-    v1::SmoothHeader header;
-    *header.mutable_parameters() = request.parameters();
-    *header.mutable_result_options() = request.result_options();
     absl::StatusOr<std::shared_ptr<Job>> job =
-        CreateJob(header, std::move(*request.mutable_mesh()), registry_, options_, &metrics_);
+        CreateJobFromJson(req.body, registry_, options_, &metrics_);
     if (!job.ok()) return ReplyError(res, job.status());
     if (auto s = registry_.Submit(*job, *caller); !s.ok()) return ReplyError(res, s);
     spdlog::info("job={} queued by HTTP POST /v1/jobs from {}{}{}", (*job)->id(), req.remote_addr,

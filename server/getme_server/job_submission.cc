@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "absl/strings/str_cat.h"
+#include "getme_server/http_json.h"
 #include "getme_server/mesh_conversion.h"
 #include "getme_server/params_conversion.h"
 
@@ -35,6 +36,18 @@ absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v
   return std::make_shared<Job>(registry.NewJobId(), std::move(mesh), *std::move(engine_mesh),
                                *params, header.result_options(), options.progress_interval,
                                metrics);
+}
+
+absl::StatusOr<std::shared_ptr<Job>> CreateJobFromJson(const std::string& body,
+                                                       JobRegistry& registry,
+                                                       const ServerOptions& options,
+                                                       ServerMetrics* metrics) {
+  v1::CreateJobRequest request;
+  if (auto s = FromJson(body, request); !s.ok()) return s;
+  v1::SmoothHeader header;
+  *header.mutable_parameters() = request.parameters();
+  *header.mutable_result_options() = request.result_options();
+  return CreateJob(header, std::move(*request.mutable_mesh()), registry, options, metrics);
 }
 
 }  // namespace getme::server

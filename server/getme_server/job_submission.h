@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
@@ -25,5 +26,13 @@ absl::Status CheckHistogramBins(std::uint32_t bins, const char* field);
 absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v1::Mesh mesh,
                                                JobRegistry& registry, const ServerOptions& options,
                                                ServerMetrics* metrics);
+
+// HTTP POST /v1/jobs: a CreateJobRequest as protobuf JSON (INVALID_ARGUMENT naming the field or
+// the syntax error), then CreateJob. The gateway and the fuzz target (fuzz/http_job_fuzzer.cc) both
+// call it, so the fuzzer reaches exactly what the endpoint does with a body.
+absl::StatusOr<std::shared_ptr<Job>> CreateJobFromJson(const std::string& body,
+                                                       JobRegistry& registry,
+                                                       const ServerOptions& options,
+                                                       ServerMetrics* metrics);
 
 }  // namespace getme::server

@@ -1,10 +1,17 @@
 // The JSON jobs API: the same jobs as gRPC, canonical JSON field names, and errors with exact
 // HTTP statuses and codes.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
+#include "absl/strings/escaping.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "gmock/gmock.h"
+#include "google/protobuf/struct.pb.h"
+#include "google/protobuf/util/json_util.h"
 #include "grpcpp/client_context.h"
 #include "gtest/gtest.h"
 #include "http_test_support.h"
@@ -156,6 +163,30 @@ TEST(HttpJobsTest, ErrorsCarryTheCanonicalCodeAndItsHttpStatus) {
   EXPECT_THAT(ExpectError(HttpPost(*test.http, "/v1/jobs", huge), 413, "RESOURCE_EXHAUSTED"),
               HasSubstr("gRPC"));
   test.grpc.server->Shutdown(absl::ZeroDuration());
+}
+
+// Found by fuzz/http_job_fuzzer.cc: protobuf's parse error quotes the body's bytes, and bytes that
+// are not UTF-8 made the error body invalid JSON. Every input in tests/data/fuzz-regressions/http
+// is refused with a JSON error body that names the code.
+TEST(HttpJobsTest, ErrorBodiesStayJsonWhenTheRequestIsNotUtf8) {
+  HttpTestServer test = StartHttpTestServer(TestOptions());
+  std::vector<std::string> bodies = {"\xff", "{\"mesh\": \"\xc3\x28\"}", "{\"x\xed\xa0\x80\": 1}"};
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(GETME_TEST_DATA) +
+                                                               "/fuzz-regressions/http")) {
+    std::ifstream file(entry.path(), std::ios::binary);
+    bodies.emplace_back(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  }
+  ASSERT_GT(bodies.size(), 3u) << "no regression inputs found";
+  for (const std::string& body : bodies) {
+    SCOPED_TRACE(absl::CHexEscape(body));
+    const HttpReply reply = HttpPost(*test.http, "/v1/jobs", body);
+    ExpectError(reply, 400, "INVALID_ARGUMENT");
+    google::protobuf::Struct parsed;
+    ASSERT_TRUE(google::protobuf::util::JsonStringToMessage(reply.body, &parsed).ok())
+        << reply.body;
+    EXPECT_EQ(parsed.fields().at("code").string_value(), "INVALID_ARGUMENT");
+    EXPECT_THAT(parsed.fields().at("message").string_value(), HasSubstr("bad JSON"));
+  }
 }
 
 TEST(HttpJobsTest, DrainingServerIsNotReadyAndRefusesJobsWithUnavailable) {
