@@ -9,6 +9,7 @@
 #include "absl/strings/str_cat.h"
 #include "getme/element_neighbours.h"
 #include "getme/element_tables.h"
+#include "getme/mesh_conformity.h"
 
 namespace getme {
 namespace {
@@ -244,7 +245,10 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
     }
   });
 
-  // Boundary: faces used by exactly one element (sorting groups equal faces together).
+  if (auto status = CheckNoRepeatedElements(mesh); !status.ok()) return status;
+
+  // Boundary: faces used by exactly one element (sorting groups equal faces together); a face of
+  // three or more elements is refused (overlapping elements).
   std::vector<FaceKey> faces;
   faces.reserve(mesh.corner_count());
   for (ElementType type : kAllElementTypes) {
@@ -257,6 +261,15 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j - i > 2) {
+      std::vector<NodeId> face_nodes;
+      for (std::uint64_t word : {faces[i].low, faces[i].high}) {
+        for (std::uint64_t id : {word >> 32, word & 0xffffffffu}) {
+          if (id != 0xffffffffu) face_nodes.push_back(static_cast<NodeId>(id));
+        }
+      }
+      return NonManifoldFaceError(mesh, face_nodes, static_cast<std::int64_t>(j - i));
+    }
     if (j - i == 1) {
       ++mesh.boundary_face_count_;
       for (std::uint64_t word : {faces[i].low, faces[i].high}) {

@@ -123,7 +123,8 @@ class MeshBuilder {
   void AddElement(ElementType type, std::span<const std::int64_t> nodes);
 
   // Fails with InvalidArgument on an empty mesh, a node id out of range or repeated within an
-  // element, a non-finite coordinate, or more than 2^31-1 nodes or elements.
+  // element, a non-finite or out-of-range coordinate, more than 2^31-1 nodes or elements, an
+  // element listed twice, or a face shared by more than two elements (mesh_conformity.h).
   absl::StatusOr<Mesh> Build() &&;
 
  private:

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -117,6 +118,45 @@ TEST(MeshBuilderErrors, RepeatedNodeNamesElementNodeAndBothLocalPositions) {
   ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 1 (pyramid)"), HasSubstr("node 3 twice"),
                                    HasSubstr("local nodes 1 and 4")));
+}
+
+// The same hexahedron again, its nodes listed from the top face: its outer faces would count two
+// elements each and drop out of the boundary.
+TEST(MeshBuilderErrors, RepeatedElementNamesBothElementsAndTheNodes) {
+  MeshBuilder builder = CubeNodes();
+  builder.AddNode(0.5, 0.5, -1.0);
+  AddElement(builder, ElementType::kHexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  AddElement(builder, ElementType::kPyramid, {0, 3, 2, 1, 8});
+  AddElement(builder, ElementType::kHexahedron, {4, 5, 6, 7, 0, 1, 2, 3});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("element 2 (hexahedron) repeats element 0"),
+                                   HasSubstr("{0, 1, 2, 3, 4, 5, 6, 7}")));
+}
+
+// Elements sharing all but one node are neighbours, not repeats.
+TEST(MeshBuilderErrors, TetrahedraSharingThreeNodesAreNoRepeat) {
+  MeshBuilder builder = CubeNodes();
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 3, 4});
+  AddElement(builder, ElementType::kTetrahedron, {1, 3, 4, 6});
+  EXPECT_TRUE(std::move(builder).Build().ok());
+}
+
+// Three tetrahedra on one triangle (two above it, overlapping, one below).
+TEST(MeshBuilderErrors, FaceOfThreeElementsNamesTheFaceAndTheElements) {
+  MeshBuilder builder;
+  for (const auto& p : std::vector<std::array<double, 3>>{
+           {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1}, {0.3, 0.3, -1}, {0.2, 0.2, 0.5}}) {
+    builder.AddNode(p[0], p[1], p[2]);
+  }
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 2, 3});
+  AddElement(builder, ElementType::kTetrahedron, {0, 2, 1, 4});
+  AddElement(builder, ElementType::kTetrahedron, {0, 1, 2, 5});
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh), AllOf(HasSubstr("face with nodes {0, 1, 2} belongs to 3 elements"),
+                                   HasSubstr("(0 (tetrahedron), 1 (tetrahedron), 2 (tetrahedron))"),
+                                   HasSubstr("overlap")));
 }
 
 struct NonFiniteCase {
