@@ -2,6 +2,7 @@
 
 #include <condition_variable>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -21,19 +22,22 @@ namespace getme::server {
 // sweeper drops results nobody fetched within the time to live.
 class JobRegistry {
  public:
-  JobRegistry(int max_queued_jobs, absl::Duration result_ttl);
+  // max_queued_bytes bounds the upload bytes of all QUEUED and RUNNING jobs together.
+  JobRegistry(int max_queued_jobs, absl::Duration result_ttl,
+              std::int64_t max_queued_bytes = std::numeric_limits<std::int64_t>::max());
   ~JobRegistry();
   JobRegistry(const JobRegistry&) = delete;
   JobRegistry& operator=(const JobRegistry&) = delete;
 
   std::string NewJobId();
-  // Queues the job: RESOURCE_EXHAUSTED at once when max_queued_jobs are already waiting,
-  // UNAVAILABLE once the server stopped accepting.
+  // Queues the job: RESOURCE_EXHAUSTED at once when max_queued_jobs are already waiting or its
+  // upload bytes would pass max_queued_bytes, UNAVAILABLE once the server stopped accepting.
   absl::Status Submit(std::shared_ptr<Job> job);
   // NOT_FOUND for ids the registry does not know (never issued, or forgotten after the TTL).
   absl::StatusOr<std::shared_ptr<Job>> Find(const std::string& id) const;
   std::vector<std::shared_ptr<Job>> List() const;  // newest first
   std::int64_t QueuedCount() const;                // jobs waiting for a worker
+  std::int64_t HeldBytes() const;                  // upload bytes of the QUEUED and RUNNING jobs
   bool accepting() const;                          // false once shutdown started
 
   // Blocks until a queued job is available (returned) or the workers are stopped (nullptr).
@@ -49,8 +53,10 @@ class JobRegistry {
  private:
   void SweepLoop();
   std::int64_t QueuedCountLocked() const;
+  std::int64_t HeldBytesLocked() const;
 
   const int max_queued_jobs_;
+  const std::int64_t max_queued_bytes_;
   const absl::Duration result_ttl_;
 
   mutable std::mutex mutex_;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "getme/v1/smoother.grpc.pb.h"
+#include "getme_server/client_streams.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
@@ -12,7 +13,10 @@ namespace getme::server {
 class SmootherService final : public v1::Smoother::Service {
  public:
   SmootherService(JobRegistry& registry, const ServerOptions& options, ServerMetrics* metrics)
-      : registry_(registry), options_(options), metrics_(metrics) {}
+      : registry_(registry),
+        options_(options),
+        metrics_(metrics),
+        streams_(options.max_streams_per_client) {}
 
   grpc::Status Smooth(
       grpc::ServerContext* context,
@@ -39,6 +43,7 @@ class SmootherService final : public v1::Smoother::Service {
   JobRegistry& registry_;
   const ServerOptions options_;
   ServerMetrics* const metrics_;
+  ClientStreamLimiter streams_;
 };
 
 }  // namespace getme::server
