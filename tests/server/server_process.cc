@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -14,7 +15,8 @@
 
 namespace getme::server::testing {
 
-ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::string>& flags) {
+ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::string>& flags,
+                          const std::vector<std::string>& environment) {
   ServerProcess child{-1, log_path};
   const std::string binary = std::string(GETME_BINARY_DIR) + "/bin/getme-server";
   std::vector<std::string> args = {binary};
@@ -34,6 +36,7 @@ ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::st
   if (child.pid == 0) {
     FILE* log = std::freopen(log_path.c_str(), "w", stderr);
     (void)log;
+    for (const std::string& variable : environment) putenv(strdup(variable.c_str()));
     execv(binary.c_str(), argv.data());
     _exit(127);
   }

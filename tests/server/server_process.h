@@ -15,8 +15,10 @@ struct ServerProcess {
   pid_t pid = -1;
   std::string log_path;
 };
-// Starts bin/getme-server with `flags` (--listen, --http_listen= are added unless given).
-ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::string>& flags);
+// Starts bin/getme-server with `flags` (--listen, --http_listen= are added unless given) and
+// `environment` ("NAME=value") added to the test's.
+ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::string>& flags,
+                          const std::vector<std::string>& environment = {});
 // The gRPC port from the "listening on port N" log line; 0 if it does not appear in time.
 int WaitForPort(const std::string& log_path);
 // The exit code (128 + signal when killed); -1 after `timeout` (the process is then killed).
