@@ -3,7 +3,6 @@
 #include <condition_variable>
 #include <limits>
 #include <mutex>
-#include <thread>
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -164,20 +163,20 @@ class SmootherServerImpl final : public SmootherServer {
       server_->GetHealthCheckService()->SetServingStatus(false);  // all services
     registry_.StopAccepting("the server is shutting down");
     const absl::Time jobs_deadline = absl::Now() + grace;
-    // gRPC stops accepting calls at once and waits for the handlers (which end with their jobs).
-    std::thread stop_calls([this, jobs_deadline] {
-      if (server_ != nullptr) {
-        server_->Shutdown(absl::ToChronoTime(jobs_deadline + kHandlerDrain));
-      }
-    });
+    // gRPC keeps taking calls while jobs run out their grace: new jobs are refused with
+    // UNAVAILABLE by the handlers (a call arriving during gRPC's own shutdown would be
+    // CANCELLED instead), and clients can still watch and fetch their jobs.
     if (!registry_.WaitUntilNoneRunning(jobs_deadline)) {
       spdlog::warn("grace period over: cancelling the jobs still running");
     }
     registry_.CancelAll("the server is shutting down");
     registry_.StopWorkers();
     workers_.Join();
-    stop_calls.join();
-    if (server_ != nullptr) server_->Wait();
+    // Handlers still streaming (progress of ended jobs, results) get kHandlerDrain to finish.
+    if (server_ != nullptr) {
+      server_->Shutdown(absl::ToChronoTime(absl::Now() + kHandlerDrain));
+      server_->Wait();
+    }
     // Last, so that /readyz answered "draining" and event streams saw their jobs' final events.
     if (http_ != nullptr) http_->Stop();
     spdlog::info("shutdown complete");

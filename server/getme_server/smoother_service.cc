@@ -123,6 +123,12 @@ grpc::Status StreamResult(Job& job, JobResult result, Writer* writer) {
 
 }  // namespace
 
+absl::Status SmootherService::RefuseWhileDraining() const {
+  // Before the upload: a draining server does not read a mesh it will not queue.
+  if (registry_.accepting()) return absl::OkStatus();
+  return absl::UnavailableError("the server is shutting down and accepts no new jobs");
+}
+
 absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::SmoothHeader& header,
                                                                 v1::Mesh mesh) {
   return server::CreateJob(header, std::move(mesh), registry_, options_, metrics_);
@@ -131,6 +137,7 @@ absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::Smooth
 grpc::Status SmootherService::Smooth(
     grpc::ServerContext* context,
     grpc::ServerReaderWriter<v1::SmoothResponse, v1::SmoothRequest>* stream) {
+  if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::SmoothHeader header;
@@ -170,6 +177,7 @@ grpc::Status SmootherService::Smooth(
 grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
                                         grpc::ServerReader<v1::SmoothRequest>* reader,
                                         v1::Job* job_out) {
+  if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::SmoothHeader header;

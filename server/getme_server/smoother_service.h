@@ -38,6 +38,7 @@ class SmootherService final : public v1::Smoother::Service {
                                v1::QualityReport* report) override;
 
  private:
+  absl::Status RefuseWhileDraining() const;
   absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v1::Mesh mesh);
 
   JobRegistry& registry_;

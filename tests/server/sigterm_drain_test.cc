@@ -103,6 +103,7 @@ TEST(SigtermDrainTest, QueuedJobsAreCancelledAndNewJobsRefusedWhileDraining) {
   // Draining: the running job is still within its grace period, and a new job is refused.
   absl::StatusOr<v1::Job> refused = Submit(*Connect(port), requests);
   EXPECT_EQ(refused.status().code(), absl::StatusCode::kUnavailable) << refused.status();
+  EXPECT_EQ(refused.status().message(), "the server is shutting down and accepts no new jobs");
 
   const int exit_code = WaitForExit(child.pid, absl::Seconds(30));
   const absl::Duration drain = absl::Now() - signalled;
