@@ -32,6 +32,25 @@ ABSL_FLAG(int, max_queued_jobs, 16,
           "jobs that may wait for a worker; one more is refused with RESOURCE_EXHAUSTED");
 ABSL_FLAG(int64_t, max_elements, 20'000'000,
           "largest mesh accepted, in elements; larger ones are refused with INVALID_ARGUMENT");
+ABSL_FLAG(int64_t, max_nodes, 30'000'000,
+          "largest mesh accepted, in nodes (declared in SmoothHeader.expected_size or counted as "
+          "chunks arrive); larger ones are refused with INVALID_ARGUMENT");
+ABSL_FLAG(int64_t, max_message_bytes, 4 << 20,
+          "largest gRPC message accepted, in bytes (clients send meshes in ~1 MiB chunks); a "
+          "larger one is refused by gRPC with RESOURCE_EXHAUSTED");
+ABSL_FLAG(int64_t, max_upload_bytes, int64_t{2} << 30,
+          "largest upload per job, in encoded mesh-chunk bytes, counted as chunks arrive; one "
+          "more chunk is refused with RESOURCE_EXHAUSTED before the rest is buffered");
+ABSL_FLAG(int64_t, max_queued_bytes, int64_t{4} << 30,
+          "upload bytes that all queued and running jobs may hold together (their meshes stay in "
+          "memory); a job that would pass it is refused with RESOURCE_EXHAUSTED; must be >= "
+          "--max_upload_bytes");
+ABSL_FLAG(absl::Duration, max_job_time, absl::Hours(1),
+          "a job running longer (time queued not counted) is stopped and fails with "
+          "DEADLINE_EXCEEDED; 'inf' = no limit");
+ABSL_FLAG(int, max_streams_per_client, 32,
+          "open streaming calls (Smooth, SubmitJob, WatchJob, GetResult, EvaluateQuality) per "
+          "client host; one more is refused with RESOURCE_EXHAUSTED");
 ABSL_FLAG(absl::Duration, result_ttl, absl::Minutes(30),
           "how long a finished job's result is kept for GetResult if nobody fetches it (e.g. 30m)");
 ABSL_FLAG(absl::Duration, progress_interval, absl::Milliseconds(100),
@@ -95,6 +114,12 @@ int main(int argc, char** argv) {
   options.threads_per_job = absl::GetFlag(FLAGS_threads_per_job);
   options.max_queued_jobs = absl::GetFlag(FLAGS_max_queued_jobs);
   options.max_elements = absl::GetFlag(FLAGS_max_elements);
+  options.max_nodes = absl::GetFlag(FLAGS_max_nodes);
+  options.max_message_bytes = absl::GetFlag(FLAGS_max_message_bytes);
+  options.max_upload_bytes = absl::GetFlag(FLAGS_max_upload_bytes);
+  options.max_queued_bytes = absl::GetFlag(FLAGS_max_queued_bytes);
+  options.max_job_time = absl::GetFlag(FLAGS_max_job_time);
+  options.max_streams_per_client = absl::GetFlag(FLAGS_max_streams_per_client);
   options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
   options.progress_interval = absl::GetFlag(FLAGS_progress_interval);
   options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);

@@ -52,6 +52,16 @@ std::shared_ptr<grpc::Channel> CreateSecureChannel(const std::string& target,
   // Results come in ~1 MB chunks; the default 4 MB receive limit is plenty, but a server may
   // choose larger chunks (ResultOptions.nodes_per_chunk), so do not refuse those.
   arguments.SetMaxReceiveMessageSize(-1);
+  // A server that went away (restart, crash) is found again quickly enough for CallOptions.retry.
+  // gRPC 1.51 waits for the longer of its reconnect backoff and its minimum connect timeout
+  // between connection attempts, and re-resolves the target's name before one: their defaults
+  // (1 s growing to 120 s, 20 s, 30 s) kept a client off a server restarted at once for 5-10 s.
+  // Here: 0.2 s growing to 2 s, 1 s (also the shortest time one TCP connect may take: enough on
+  // a LAN, short on a slow WAN), 0.5 s; a restart is then seen within about 1.5 s.
+  arguments.SetInt(GRPC_ARG_INITIAL_RECONNECT_BACKOFF_MS, 200);
+  arguments.SetInt(GRPC_ARG_MAX_RECONNECT_BACKOFF_MS, 2000);
+  arguments.SetInt(GRPC_ARG_MIN_RECONNECT_BACKOFF_MS, 1000);
+  arguments.SetInt(GRPC_ARG_DNS_MIN_TIME_BETWEEN_RESOLUTIONS_MS, 500);
   std::shared_ptr<grpc::ChannelCredentials> credentials = grpc::InsecureChannelCredentials();
   if (security.tls || !security.tls_ca_pem.empty() || !security.tls_cert_pem.empty()) {
     grpc::SslCredentialsOptions ssl;

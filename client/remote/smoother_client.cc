@@ -8,14 +8,15 @@
 #include "grpcpp/security/credentials.h"
 #include "remote/cancel_watcher.h"
 #include "remote/mesh_chunks.h"
+#include "remote/retry.h"
 #include "remote/status_conversion.h"
 
 namespace getme::remote {
 namespace {
 
-void ApplyTimeout(const CallOptions& call, grpc::ClientContext& context) {
-  if (call.timeout == absl::InfiniteDuration()) return;
-  context.set_deadline(absl::ToChronoTime(absl::Now() + call.timeout));
+void ApplyDeadline(const Attempt& attempt, grpc::ClientContext& context) {
+  if (attempt.deadline == absl::InfiniteFuture()) return;
+  context.set_deadline(absl::ToChronoTime(attempt.deadline));
 }
 
 v1::SmoothRequest HeaderRequest(const v1::Mesh& mesh, const SmoothJobOptions& job) {
@@ -28,16 +29,16 @@ v1::SmoothRequest HeaderRequest(const v1::Mesh& mesh, const SmoothJobOptions& jo
 }
 
 // Writes the header and every chunk; stops early when the server has ended the call (its status
-// then tells why, so the caller goes on to Finish).
+// then tells why, so the caller goes on to Finish). True when the whole upload was sent.
 template <typename Writer, typename Request>
-void Upload(Writer& writer, Request header, const v1::Mesh& mesh, std::size_t chunk_bytes) {
-  if (!writer.Write(header)) return;
+bool Upload(Writer& writer, Request header, const v1::Mesh& mesh, std::size_t chunk_bytes) {
+  if (!writer.Write(header)) return false;
   MeshChunker chunker(mesh, chunk_bytes);
   Request request;
   while (chunker.Next(*request.mutable_chunk())) {
-    if (!writer.Write(request)) return;
+    if (!writer.Write(request)) return false;
   }
-  writer.WritesDone();
+  return writer.WritesDone();
 }
 
 // Reads a result stream's SmoothResult and mesh chunks (and progress events before them).
@@ -88,14 +89,17 @@ class ResultReader {
   MeshAssembler assembler_;
 };
 
-// Drains a SmoothResponse stream into a result. A protocol violation cancels the call.
+// Drains a SmoothResponse stream into a result. A protocol violation cancels the call. Once a
+// message arrived the attempt is not retried.
 template <typename Stream>
 absl::StatusOr<RemoteSmoothResult> ReadResult(Stream& stream, grpc::ClientContext& context,
-                                              const ProgressHandler& on_progress) {
+                                              const ProgressHandler& on_progress,
+                                              Attempt& attempt) {
   ResultReader reader(on_progress);
   v1::SmoothResponse response;
   absl::Status protocol = absl::OkStatus();
   while (stream.Read(&response)) {
+    attempt.retry_safe = false;
     protocol = reader.Consume(response);
     if (!protocol.ok()) {
       context.TryCancel();
@@ -128,118 +132,139 @@ absl::StatusOr<RemoteSmoothResult> SmootherClient::Smooth(const v1::Mesh& mesh,
                                                           const SmoothJobOptions& job,
                                                           const ProgressHandler& on_progress,
                                                           const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  CancelWatcher watcher(context, call.cancel);
-  std::unique_ptr<grpc::ClientReaderWriter<v1::SmoothRequest, v1::SmoothResponse>> stream =
-      stub_->Smooth(&context);
-  Upload(*stream, HeaderRequest(mesh, job), mesh, call.chunk_bytes);
-  absl::StatusOr<RemoteSmoothResult> result = ReadResult(*stream, context, on_progress);
-  if (!result.ok() && watcher.fired()) {
-    return absl::CancelledError(
-        absl::StrCat("cancelled by the client (", result.status().message(), ")"));
-  }
-  return result;
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<RemoteSmoothResult> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    CancelWatcher watcher(context, call.cancel);
+    std::unique_ptr<grpc::ClientReaderWriter<v1::SmoothRequest, v1::SmoothResponse>> stream =
+        stub_->Smooth(&context);
+    Upload(*stream, HeaderRequest(mesh, job), mesh, call.chunk_bytes);
+    absl::StatusOr<RemoteSmoothResult> result = ReadResult(*stream, context, on_progress, attempt);
+    if (!result.ok() && watcher.fired()) {
+      return absl::CancelledError(
+          absl::StrCat("cancelled by the client (", result.status().message(), ")"));
+    }
+    return result;
+  });
 }
 
 absl::StatusOr<v1::Job> SmootherClient::SubmitJob(const v1::Mesh& mesh, const SmoothJobOptions& job,
                                                   const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  CancelWatcher watcher(context, call.cancel);
-  v1::Job submitted;
-  std::unique_ptr<grpc::ClientWriter<v1::SmoothRequest>> writer =
-      stub_->SubmitJob(&context, &submitted);
-  Upload(*writer, HeaderRequest(mesh, job), mesh, call.chunk_bytes);
-  if (absl::Status status = FromGrpcStatus(writer->Finish()); !status.ok()) return status;
-  return submitted;
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<v1::Job> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    CancelWatcher watcher(context, call.cancel);
+    v1::Job submitted;
+    std::unique_ptr<grpc::ClientWriter<v1::SmoothRequest>> writer =
+        stub_->SubmitJob(&context, &submitted);
+    // Sent whole, the upload may have become a queued job even if the reply is lost.
+    attempt.retry_safe = !Upload(*writer, HeaderRequest(mesh, job), mesh, call.chunk_bytes);
+    if (absl::Status status = FromGrpcStatus(writer->Finish()); !status.ok()) return status;
+    return submitted;
+  });
 }
 
 absl::Status SmootherClient::WatchJob(const std::string& job_id, const ProgressHandler& on_progress,
                                       const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  CancelWatcher watcher(context, call.cancel);
-  v1::WatchJobRequest request;
-  request.set_job_id(job_id);
-  std::unique_ptr<grpc::ClientReader<v1::ProgressEvent>> reader =
-      stub_->WatchJob(&context, request);
-  v1::ProgressEvent event;
-  while (reader->Read(&event)) {
-    if (on_progress) on_progress(event);
-  }
-  absl::Status status = FromGrpcStatus(reader->Finish());
-  if (!status.ok() && watcher.fired()) {
-    return absl::CancelledError(absl::StrCat("watching job ", job_id, " stopped by the client"));
-  }
-  return status;
+  return WithRetry(call, [&](Attempt& attempt) -> absl::Status {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    CancelWatcher watcher(context, call.cancel);
+    v1::WatchJobRequest request;
+    request.set_job_id(job_id);
+    std::unique_ptr<grpc::ClientReader<v1::ProgressEvent>> reader =
+        stub_->WatchJob(&context, request);
+    v1::ProgressEvent event;
+    while (reader->Read(&event)) {
+      attempt.retry_safe = false;  // a retry would repeat events
+      if (on_progress) on_progress(event);
+    }
+    absl::Status status = FromGrpcStatus(reader->Finish());
+    if (!status.ok() && watcher.fired()) {
+      return absl::CancelledError(absl::StrCat("watching job ", job_id, " stopped by the client"));
+    }
+    return status;
+  });
 }
 
 absl::StatusOr<v1::Job> SmootherClient::GetJob(const std::string& job_id, const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  v1::GetJobRequest request;
-  request.set_job_id(job_id);
-  v1::Job job;
-  if (absl::Status status = FromGrpcStatus(stub_->GetJob(&context, request, &job)); !status.ok()) {
-    return status;
-  }
-  return job;
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<v1::Job> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    v1::GetJobRequest request;
+    request.set_job_id(job_id);
+    v1::Job job;
+    if (absl::Status status = FromGrpcStatus(stub_->GetJob(&context, request, &job));
+        !status.ok()) {
+      return status;
+    }
+    return job;
+  });
 }
 
 absl::StatusOr<v1::Job> SmootherClient::CancelJob(const std::string& job_id,
                                                   const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  v1::CancelJobRequest request;
-  request.set_job_id(job_id);
-  v1::Job job;
-  if (absl::Status status = FromGrpcStatus(stub_->CancelJob(&context, request, &job));
-      !status.ok()) {
-    return status;
-  }
-  return job;
+  // Cancelling twice is the same as once.
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<v1::Job> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    v1::CancelJobRequest request;
+    request.set_job_id(job_id);
+    v1::Job job;
+    if (absl::Status status = FromGrpcStatus(stub_->CancelJob(&context, request, &job));
+        !status.ok()) {
+      return status;
+    }
+    return job;
+  });
 }
 
 absl::StatusOr<std::vector<v1::Job>> SmootherClient::ListJobs(const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  v1::ListJobsResponse response;
-  if (absl::Status status =
-          FromGrpcStatus(stub_->ListJobs(&context, v1::ListJobsRequest(), &response));
-      !status.ok()) {
-    return status;
-  }
-  return std::vector<v1::Job>(response.jobs().begin(), response.jobs().end());
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<std::vector<v1::Job>> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    v1::ListJobsResponse response;
+    if (absl::Status status =
+            FromGrpcStatus(stub_->ListJobs(&context, v1::ListJobsRequest(), &response));
+        !status.ok()) {
+      return status;
+    }
+    return std::vector<v1::Job>(response.jobs().begin(), response.jobs().end());
+  });
 }
 
 absl::StatusOr<RemoteSmoothResult> SmootherClient::GetResult(const std::string& job_id,
                                                              const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  CancelWatcher watcher(context, call.cancel);
-  v1::GetResultRequest request;
-  request.set_job_id(job_id);
-  std::unique_ptr<grpc::ClientReader<v1::SmoothResponse>> reader =
-      stub_->GetResult(&context, request);
-  return ReadResult(*reader, context, ProgressHandler());
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<RemoteSmoothResult> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    CancelWatcher watcher(context, call.cancel);
+    v1::GetResultRequest request;
+    request.set_job_id(job_id);
+    std::unique_ptr<grpc::ClientReader<v1::SmoothResponse>> reader =
+        stub_->GetResult(&context, request);
+    return ReadResult(*reader, context, ProgressHandler(), attempt);
+  });
 }
 
 absl::StatusOr<v1::QualityReport> SmootherClient::EvaluateQuality(const v1::Mesh& mesh,
                                                                   std::uint32_t histogram_bins,
                                                                   const CallOptions& call) {
-  grpc::ClientContext context;
-  ApplyTimeout(call, context);
-  CancelWatcher watcher(context, call.cancel);
-  v1::QualityReport report;
-  std::unique_ptr<grpc::ClientWriter<v1::EvaluateQualityRequest>> writer =
-      stub_->EvaluateQuality(&context, &report);
-  v1::EvaluateQualityRequest header;
-  header.mutable_header()->set_histogram_bins(histogram_bins);
-  *header.mutable_header()->mutable_expected_size() = SizeOf(mesh);
-  Upload(*writer, std::move(header), mesh, call.chunk_bytes);
-  if (absl::Status status = FromGrpcStatus(writer->Finish()); !status.ok()) return status;
-  return report;
+  // The server keeps nothing from an evaluation.
+  return WithRetry(call, [&](Attempt& attempt) -> absl::StatusOr<v1::QualityReport> {
+    grpc::ClientContext context;
+    ApplyDeadline(attempt, context);
+    CancelWatcher watcher(context, call.cancel);
+    v1::QualityReport report;
+    std::unique_ptr<grpc::ClientWriter<v1::EvaluateQualityRequest>> writer =
+        stub_->EvaluateQuality(&context, &report);
+    v1::EvaluateQualityRequest header;
+    header.mutable_header()->set_histogram_bins(histogram_bins);
+    *header.mutable_header()->mutable_expected_size() = SizeOf(mesh);
+    Upload(*writer, std::move(header), mesh, call.chunk_bytes);
+    if (absl::Status status = FromGrpcStatus(writer->Finish()); !status.ok()) return status;
+    return report;
+  });
 }
 
 }  // namespace getme::remote

@@ -28,7 +28,8 @@ struct RemoteSmoothResult {
 // A client of the getme.v1.Smoother service, for any C++ program. Meshes are uploaded as a header
 // plus ~1 MB MeshChunk messages and results downloaded the same way, so mesh size is not bounded
 // by gRPC's message limit. Every method returns the server's status code and message unchanged
-// (UNAVAILABLE when the server cannot be reached). Thread-safe: calls may run concurrently.
+// (UNAVAILABLE when the server cannot be reached, after the retries of CallOptions.retry).
+// Thread-safe: calls may run concurrently.
 class SmootherClient {
  public:
   explicit SmootherClient(std::shared_ptr<grpc::ChannelInterface> channel);

@@ -30,6 +30,7 @@ const char* StateName(v1::JobState state) {
 Job::Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
          v1::ResultOptions options, absl::Duration progress_interval, ServerMetrics* metrics)
     : id_(std::move(id)),
+      upload_bytes_(static_cast<std::int64_t>(topology.ByteSizeLong())),
       params_(params),
       nodes_(static_cast<std::uint64_t>(mesh.node_count())),
       elements_(static_cast<std::uint64_t>(mesh.element_count())),
@@ -126,7 +127,11 @@ void Job::Run() {
   double seconds = 0;
   {
     std::lock_guard lock(mutex_);
-    if (outcome.code() == absl::StatusCode::kCancelled && !cancel_reason_.empty()) {
+    if (outcome.code() == absl::StatusCode::kCancelled && time_limit_hit_.has_value()) {
+      outcome = absl::DeadlineExceededError(
+          absl::StrCat("job ", id_, " stopped: it ran longer than the server's limit of ",
+                       absl::FormatDuration(*time_limit_hit_), " per job (--max_job_time)"));
+    } else if (outcome.code() == absl::StatusCode::kCancelled && !cancel_reason_.empty()) {
       outcome = absl::CancelledError(absl::StrCat("job ", id_, " cancelled: ", cancel_reason_));
     }
     FinishLocked(outcome);
@@ -196,6 +201,18 @@ void Job::Cancel(absl::string_view reason) {
   } else {
     spdlog::info("job={} cancel requested: {}", id_, std::string(reason));
   }
+}
+
+void Job::StopForTimeLimit(absl::Duration limit) {
+  {
+    std::lock_guard lock(mutex_);
+    // A cancel that came first keeps its reason.
+    if (state_ != v1::JOB_STATE_RUNNING || !cancel_reason_.empty()) return;
+    time_limit_hit_ = limit;
+  }
+  cancel_.Cancel();
+  spdlog::warn("job={} stopping: running longer than --max_job_time={}", id_,
+               absl::FormatDuration(limit));
 }
 
 v1::JobState Job::state() const {
@@ -283,6 +300,13 @@ absl::StatusOr<JobResult> Job::TakeResult() {
   result_.reset();
   result_taken_ = true;
   return taken;
+}
+
+void Job::RestoreResult(JobResult result) {
+  std::lock_guard lock(mutex_);
+  if (state_ != v1::JOB_STATE_SUCCEEDED || result_ != nullptr || result_expired_) return;
+  result_ = std::make_unique<JobResult>(std::move(result));
+  result_taken_ = false;
 }
 
 bool Job::ExpireIfOlderThan(absl::Time now, absl::Duration ttl) {

@@ -39,11 +39,16 @@ class Job {
       ServerMetrics* metrics = nullptr);
 
   const std::string& id() const { return id_; }
+  // Encoded size of the uploaded mesh: what the job counts against --max_queued_bytes.
+  std::int64_t upload_bytes() const { return upload_bytes_; }
 
   // Runs the engine on the calling (worker) thread; returns at once unless the job is QUEUED.
   void Run();
   // Queued: CANCELLED at once. Running: the engine stops within one iteration. Final: no-op.
   void Cancel(absl::string_view reason);
+  // Running: the engine stops within one iteration and the job FAILS with DEADLINE_EXCEEDED
+  // naming the limit. Otherwise a no-op.
+  void StopForTimeLimit(absl::Duration limit);
 
   v1::JobState state() const;
   bool final() const;
@@ -66,6 +71,9 @@ class Job {
   // Hands the result out once. FAILED/CANCELLED jobs give their outcome, unfinished ones
   // FAILED_PRECONDITION, fetched or expired results NOT_FOUND.
   absl::StatusOr<JobResult> TakeResult();
+  // Gives back a result TakeResult handed out whose download did not complete, so the caller can
+  // fetch it again (until the time to live passes).
+  void RestoreResult(JobResult result);
   // Drops an unfetched result `ttl` after the job finished; true once the job is final for
   // twice that (the registry then forgets it).
   bool ExpireIfOlderThan(absl::Time now, absl::Duration ttl);
@@ -77,6 +85,7 @@ class Job {
   void RecordTraceLocked(const v1::ProgressEvent& event);
 
   const std::string id_;
+  const std::int64_t upload_bytes_;
   const SmoothingParams params_;
   const std::uint64_t nodes_;
   const std::uint64_t elements_;
@@ -91,6 +100,7 @@ class Job {
   absl::Time finished_ = absl::InfinitePast();
   absl::Status outcome_;
   std::string cancel_reason_;
+  std::optional<absl::Duration> time_limit_hit_;  // set by StopForTimeLimit
   std::optional<v1::ProgressEvent> latest_;
   std::uint64_t sequence_ = 0;
   std::uint64_t element_iterations_ = 0;

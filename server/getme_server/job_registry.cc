@@ -10,8 +10,11 @@
 
 namespace getme::server {
 
-JobRegistry::JobRegistry(int max_queued_jobs, absl::Duration result_ttl)
-    : max_queued_jobs_(max_queued_jobs), result_ttl_(result_ttl) {
+JobRegistry::JobRegistry(int max_queued_jobs, absl::Duration result_ttl,
+                         std::int64_t max_queued_bytes)
+    : max_queued_jobs_(max_queued_jobs),
+      max_queued_bytes_(max_queued_bytes),
+      result_ttl_(result_ttl) {
   sweeper_ = std::thread([this] { SweepLoop(); });
 }
 
@@ -38,6 +41,20 @@ std::int64_t JobRegistry::QueuedCountLocked() const {
                        [](const auto& job) { return job->state() == v1::JOB_STATE_QUEUED; });
 }
 
+std::int64_t JobRegistry::HeldBytesLocked() const {
+  // Every QUEUED or RUNNING job is in submission_order_ (the sweeper forgets only final ones).
+  std::int64_t bytes = 0;
+  for (const auto& job : submission_order_) {
+    if (!job->final()) bytes += job->upload_bytes();
+  }
+  return bytes;
+}
+
+std::int64_t JobRegistry::HeldBytes() const {
+  std::lock_guard lock(mutex_);
+  return HeldBytesLocked();
+}
+
 absl::Status JobRegistry::Submit(std::shared_ptr<Job> job, std::string owner) {
   {
     std::lock_guard lock(mutex_);
@@ -50,6 +67,13 @@ absl::Status JobRegistry::Submit(std::shared_ptr<Job> job, std::string owner) {
       return absl::ResourceExhaustedError(
           absl::StrCat("the job queue is full: ", max_queued_jobs_,
                        " jobs are waiting for a worker (--max_queued_jobs); retry later"));
+    }
+    if (const std::int64_t held = HeldBytesLocked();
+        held + job->upload_bytes() > max_queued_bytes_) {
+      return absl::ResourceExhaustedError(
+          absl::StrCat("queued and running jobs hold ", held, " bytes of meshes; this job's ",
+                       job->upload_bytes(), " bytes would pass the server's limit of ",
+                       max_queued_bytes_, " bytes (--max_queued_bytes); retry later"));
     }
     jobs_[job->id()] = {job, std::move(owner)};
     submission_order_.push_back(job);

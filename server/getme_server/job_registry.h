@@ -2,6 +2,7 @@
 
 #include <condition_variable>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -23,14 +24,16 @@ namespace getme::server {
 // unknown one, so ids do not leak (with authentication off everyone is the same owner).
 class JobRegistry {
  public:
-  JobRegistry(int max_queued_jobs, absl::Duration result_ttl);
+  // max_queued_bytes bounds the upload bytes of all QUEUED and RUNNING jobs together.
+  JobRegistry(int max_queued_jobs, absl::Duration result_ttl,
+              std::int64_t max_queued_bytes = std::numeric_limits<std::int64_t>::max());
   ~JobRegistry();
   JobRegistry(const JobRegistry&) = delete;
   JobRegistry& operator=(const JobRegistry&) = delete;
 
   std::string NewJobId();
-  // Queues the job: RESOURCE_EXHAUSTED at once when max_queued_jobs are already waiting,
-  // UNAVAILABLE once the server stopped accepting.
+  // Queues the job: RESOURCE_EXHAUSTED at once when max_queued_jobs are already waiting or its
+  // upload bytes would pass max_queued_bytes, UNAVAILABLE once the server stopped accepting.
   absl::Status Submit(std::shared_ptr<Job> job, std::string owner = {});
   // NOT_FOUND for ids the registry does not know (never issued, or forgotten after the TTL) and
   // for jobs of another owner, with the same message.
@@ -39,6 +42,7 @@ class JobRegistry {
   // Every owner's jobs, for server-wide figures (metrics) and shutdown.
   std::vector<std::shared_ptr<Job>> ListAllOwners() const;
   std::int64_t QueuedCount() const;  // jobs waiting for a worker
+  std::int64_t HeldBytes() const;    // upload bytes of the QUEUED and RUNNING jobs
   bool accepting() const;            // false once shutdown started
 
   // Blocks until a queued job is available (returned) or the workers are stopped (nullptr).
@@ -54,8 +58,10 @@ class JobRegistry {
  private:
   void SweepLoop();
   std::int64_t QueuedCountLocked() const;
+  std::int64_t HeldBytesLocked() const;
 
   const int max_queued_jobs_;
+  const std::int64_t max_queued_bytes_;
   const absl::Duration result_ttl_;
 
   mutable std::mutex mutex_;

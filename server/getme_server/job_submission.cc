@@ -6,6 +6,7 @@
 #include "getme_server/http_json.h"
 #include "getme_server/mesh_conversion.h"
 #include "getme_server/params_conversion.h"
+#include "getme_server/upload_meter.h"
 
 namespace getme::server {
 namespace {
@@ -31,6 +32,7 @@ absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v
       !s.ok()) {
     return s;
   }
+  if (auto s = CheckNodeCount(mesh.coordinates_size() / 3, options.max_nodes); !s.ok()) return s;
   absl::StatusOr<Mesh> engine_mesh = ToEngineMesh(mesh, options.max_elements);
   if (!engine_mesh.ok()) return engine_mesh.status();
   return std::make_shared<Job>(registry.NewJobId(), std::move(mesh), *std::move(engine_mesh),

@@ -1,8 +1,8 @@
 #include "getme_server/server.h"
 
 #include <condition_variable>
+#include <limits>
 #include <mutex>
-#include <thread>
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
@@ -25,10 +25,23 @@
 namespace getme::server {
 namespace {
 
-// Requests arrive in chunks, so this bounds one message, not a mesh.
-constexpr int kMaxReceiveMessageBytes = 16 << 20;
+// HTTP/2 streams one connection may open at once: a client needing more waits (it is not
+// refused); --max_streams_per_client is the limit with a status. Bounds per-connection buffers.
+constexpr int kMaxStreamsPerConnection = 256;
+// Pings on idle connections find clients that vanished without closing them (a crashed host, a
+// dropped network), so their calls end and their stream slots free up.
+constexpr absl::Duration kKeepaliveTime = absl::Minutes(1);
+constexpr absl::Duration kKeepaliveTimeout = absl::Seconds(20);
+// Connections without calls for this long are closed; clients reconnect transparently.
+constexpr absl::Duration kMaxConnectionIdle = absl::Minutes(15);
+// Clients may ping this often (e.g. their own keepalive) without being disconnected for it.
+constexpr absl::Duration kMinClientPingInterval = absl::Seconds(10);
 // After running jobs ended, handlers still streaming results get this long to finish.
 constexpr absl::Duration kHandlerDrain = absl::Seconds(10);
+
+int Milliseconds(absl::Duration duration) {
+  return static_cast<int>(absl::ToInt64Milliseconds(duration));
+}
 
 absl::Status CheckOptions(const ServerOptions& options) {
   auto at_least = [](const char* flag, std::int64_t value, std::int64_t min) {
@@ -40,6 +53,28 @@ absl::Status CheckOptions(const ServerOptions& options) {
   if (auto s = at_least("threads_per_job", options.threads_per_job, 0); !s.ok()) return s;
   if (auto s = at_least("max_queued_jobs", options.max_queued_jobs, 0); !s.ok()) return s;
   if (auto s = at_least("max_elements", options.max_elements, 1); !s.ok()) return s;
+  if (auto s = at_least("max_nodes", options.max_nodes, 1); !s.ok()) return s;
+  // Below 64 KiB not even a small chunk fits; above 2 GiB gRPC cannot count.
+  if (auto s = at_least("max_message_bytes", options.max_message_bytes, 64 << 10); !s.ok()) {
+    return s;
+  }
+  if (options.max_message_bytes > std::numeric_limits<int>::max()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "--max_message_bytes = ", options.max_message_bytes, " is out of range: must be < 2 GiB"));
+  }
+  if (auto s = at_least("max_upload_bytes", options.max_upload_bytes, 1); !s.ok()) return s;
+  // Else a job the upload limit lets through could never be queued.
+  if (auto s = at_least("max_queued_bytes", options.max_queued_bytes, options.max_upload_bytes);
+      !s.ok()) {
+    return absl::InvalidArgumentError(absl::StrCat(s.message(), " (--max_upload_bytes)"));
+  }
+  if (auto s = at_least("max_streams_per_client", options.max_streams_per_client, 1); !s.ok()) {
+    return s;
+  }
+  if (options.max_job_time <= absl::ZeroDuration()) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "--max_job_time = ", absl::FormatDuration(options.max_job_time), " must be positive"));
+  }
   if (options.result_ttl <= absl::ZeroDuration()) {
     return absl::InvalidArgumentError(absl::StrCat(
         "--result_ttl = ", absl::FormatDuration(options.result_ttl), " must be positive"));
@@ -70,8 +105,9 @@ class SmootherServerImpl final : public SmootherServer {
                      std::optional<TlsFiles> tls)
       : authenticator_(std::move(authenticator)),
         tls_(std::move(tls)),
-        registry_(options.max_queued_jobs, options.result_ttl),
-        workers_(registry_, options.workers),
+        registry_(options.max_queued_jobs, options.result_ttl, options.max_queued_bytes),
+        workers_(registry_, options.workers, options.max_job_time),
+        max_message_bytes_(static_cast<int>(options.max_message_bytes)),
         service_(registry_, options, &metrics_, authenticator_) {}
 
   ~SmootherServerImpl() override { Shutdown(absl::ZeroDuration()); }
@@ -81,7 +117,16 @@ class SmootherServerImpl final : public SmootherServer {
     grpc::reflection::InitProtoReflectionServerBuilderPlugin();
     grpc::ServerBuilder builder;
     builder.AddListeningPort(address, GrpcCredentials(tls_), &port_);
-    builder.SetMaxReceiveMessageSize(kMaxReceiveMessageBytes);
+    // Requests arrive in chunks, so this bounds one message, not a mesh; gRPC itself refuses a
+    // larger one with RESOURCE_EXHAUSTED.
+    builder.SetMaxReceiveMessageSize(max_message_bytes_);
+    builder.AddChannelArgument(GRPC_ARG_MAX_CONCURRENT_STREAMS, kMaxStreamsPerConnection);
+    builder.AddChannelArgument(GRPC_ARG_KEEPALIVE_TIME_MS, Milliseconds(kKeepaliveTime));
+    builder.AddChannelArgument(GRPC_ARG_KEEPALIVE_TIMEOUT_MS, Milliseconds(kKeepaliveTimeout));
+    builder.AddChannelArgument(GRPC_ARG_KEEPALIVE_PERMIT_WITHOUT_CALLS, 1);
+    builder.AddChannelArgument(GRPC_ARG_MAX_CONNECTION_IDLE_MS, Milliseconds(kMaxConnectionIdle));
+    builder.AddChannelArgument(GRPC_ARG_HTTP2_MIN_RECV_PING_INTERVAL_WITHOUT_DATA_MS,
+                               Milliseconds(kMinClientPingInterval));
     builder.RegisterService(&service_);
     std::vector<std::unique_ptr<grpc::experimental::ServerInterceptorFactoryInterface>> counters;
     counters.push_back(RpcMetricsInterceptor(metrics_));
@@ -142,20 +187,20 @@ class SmootherServerImpl final : public SmootherServer {
       server_->GetHealthCheckService()->SetServingStatus(false);  // all services
     registry_.StopAccepting("the server is shutting down");
     const absl::Time jobs_deadline = absl::Now() + grace;
-    // gRPC stops accepting calls at once and waits for the handlers (which end with their jobs).
-    std::thread stop_calls([this, jobs_deadline] {
-      if (server_ != nullptr) {
-        server_->Shutdown(absl::ToChronoTime(jobs_deadline + kHandlerDrain));
-      }
-    });
+    // gRPC keeps taking calls while jobs run out their grace: new jobs are refused with
+    // UNAVAILABLE by the handlers (a call arriving during gRPC's own shutdown would be
+    // CANCELLED instead), and clients can still watch and fetch their jobs.
     if (!registry_.WaitUntilNoneRunning(jobs_deadline)) {
       spdlog::warn("grace period over: cancelling the jobs still running");
     }
     registry_.CancelAll("the server is shutting down");
     registry_.StopWorkers();
     workers_.Join();
-    stop_calls.join();
-    if (server_ != nullptr) server_->Wait();
+    // Handlers still streaming (progress of ended jobs, results) get kHandlerDrain to finish.
+    if (server_ != nullptr) {
+      server_->Shutdown(absl::ToChronoTime(absl::Now() + kHandlerDrain));
+      server_->Wait();
+    }
     // Last, so that /readyz answered "draining" and event streams saw their jobs' final events.
     if (http_ != nullptr) http_->Stop();
     spdlog::info("shutdown complete");
@@ -166,6 +211,7 @@ class SmootherServerImpl final : public SmootherServer {
   ServerMetrics metrics_;  // before the registry: jobs count into it until they are destroyed
   JobRegistry registry_;
   WorkerPool workers_;
+  const int max_message_bytes_;
   SmootherService service_;
   std::unique_ptr<grpc::Server> server_;
   int port_ = 0;
@@ -207,9 +253,13 @@ absl::StatusOr<std::unique_ptr<SmootherServer>> SmootherServer::Start(
   }
   spdlog::info(
       "getme-server listening on port {} (workers={} threads_per_job={} "
-      "max_queued_jobs={} max_elements={} result_ttl={} tls={} auth={})",
+      "max_queued_jobs={} max_elements={} max_nodes={} max_message_bytes={} "
+      "max_upload_bytes={} max_queued_bytes={} max_job_time={} max_streams_per_client={} "
+      "result_ttl={} tls={} auth={})",
       server->port(), options.workers, options.threads_per_job, options.max_queued_jobs,
-      options.max_elements, absl::FormatDuration(options.result_ttl),
+      options.max_elements, options.max_nodes, options.max_message_bytes, options.max_upload_bytes,
+      options.max_queued_bytes, absl::FormatDuration(options.max_job_time),
+      options.max_streams_per_client, absl::FormatDuration(options.result_ttl),
       !server->tls()                  ? "off"
       : options.tls_client_ca.empty() ? "on"
                                       : "mtls",

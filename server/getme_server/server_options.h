@@ -34,6 +34,20 @@ struct ServerOptions {
   std::string tls_key;
   // PEM CA certificate(s): clients must present a certificate one of them signed (mTLS).
   std::string tls_client_ca;
+  // Resource limits (docs/reliability-load.md explains the defaults and the memory they bound).
+  // Largest gRPC message accepted; the clients' chunks are about 1 MiB. More: RESOURCE_EXHAUSTED.
+  std::int64_t max_message_bytes = 4 << 20;
+  // Encoded bytes of one job's mesh chunks, counted as they arrive. More: RESOURCE_EXHAUSTED.
+  std::int64_t max_upload_bytes = std::int64_t{2} << 30;
+  std::int64_t max_nodes = 30'000'000;  // larger meshes: INVALID_ARGUMENT
+  // Upload bytes of all QUEUED and RUNNING jobs together; a job that would pass it:
+  // RESOURCE_EXHAUSTED. Must be at least max_upload_bytes, so that any accepted upload can run.
+  std::int64_t max_queued_bytes = std::int64_t{4} << 30;
+  // A job running longer is stopped and FAILED with DEADLINE_EXCEEDED; InfiniteDuration = none.
+  absl::Duration max_job_time = absl::Hours(1);
+  // Open Smooth/SubmitJob/WatchJob/GetResult/EvaluateQuality calls per client host; one more:
+  // RESOURCE_EXHAUSTED.
+  int max_streams_per_client = 32;
 };
 
 }  // namespace getme::server

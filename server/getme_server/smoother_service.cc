@@ -12,6 +12,7 @@
 #include "getme_server/mesh_conversion.h"
 #include "getme_server/report_conversion.h"
 #include "getme_server/status_mapping.h"
+#include "getme_server/upload_meter.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::server {
@@ -22,16 +23,18 @@ namespace {
 constexpr absl::Duration kClientPollInterval = absl::Milliseconds(50);
 
 template <typename Header>
-absl::Status CheckHeader(const Header& header, std::int64_t max_elements) {
-  if (header.has_expected_size()) return CheckDeclaredSize(header.expected_size(), max_elements);
-  return absl::OkStatus();
+absl::Status CheckHeader(const Header& header, std::int64_t max_elements,
+                         const UploadMeter& meter) {
+  if (!header.has_expected_size()) return absl::OkStatus();
+  if (auto s = CheckDeclaredSize(header.expected_size(), max_elements); !s.ok()) return s;
+  return meter.CheckDeclared(header.expected_size());
 }
 
 // Reads an upload stream: an optional header first, then mesh chunks. A missing header means
 // default parameters.
 template <typename Request, typename Header, typename Reader>
 absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64_t max_elements,
-                        Header& header, v1::Mesh& mesh) {
+                        UploadMeter meter, Header& header, v1::Mesh& mesh) {
   Request request;
   std::int64_t message = 0;
   bool have_header = false;
@@ -45,9 +48,10 @@ absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64
       }
       header = request.header();
       have_header = true;
-      if (auto s = CheckHeader(header, max_elements); !s.ok()) return s;
+      if (auto s = CheckHeader(header, max_elements, meter); !s.ok()) return s;
     } else if (request.has_chunk()) {
       if (auto s = AppendMeshChunk(request.chunk(), max_elements, mesh); !s.ok()) return s;
+      if (auto s = meter.AddChunk(request.chunk(), mesh); !s.ok()) return s;
     } else {
       return absl::InvalidArgumentError(
           absl::StrCat("request message ", message, " carries neither a header nor a chunk"));
@@ -63,8 +67,13 @@ absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64
 
 enum class WatchEnd { kJobEnded, kClientGone, kDeadline };
 
-bool DeadlinePassed(const grpc::ServerContext* context) {
-  return context->deadline() <= std::chrono::system_clock::now();
+// Why a call that can no longer be written to ended. gRPC's deadline timer may end it a little
+// before the deadline reads as passed on the system clock (seen under load), so an end within
+// the poll interval of the deadline counts as the deadline.
+WatchEnd WhyCallEnded(const grpc::ServerContext* context) {
+  const bool deadline = context->deadline() <= std::chrono::system_clock::now() +
+                                                   absl::ToChronoMilliseconds(kClientPollInterval);
+  return deadline ? WatchEnd::kDeadline : WatchEnd::kClientGone;
 }
 
 // Forwards progress events until the job's final event, or until the client goes away.
@@ -77,23 +86,24 @@ WatchEnd ForwardProgress(grpc::ServerContext* context, ProgressFanout::Watcher& 
       case ProgressFanout::NextResult::kEnded:
         return WatchEnd::kJobEnded;
       case ProgressFanout::NextResult::kEvent:
-        if (!write(event))
-          return DeadlinePassed(context) ? WatchEnd::kDeadline : WatchEnd::kClientGone;
+        if (!write(event)) return WhyCallEnded(context);
         if (event.final()) return WatchEnd::kJobEnded;
         break;
       case ProgressFanout::NextResult::kTimeout:
-        if (DeadlinePassed(context)) return WatchEnd::kDeadline;
-        if (context->IsCancelled()) return WatchEnd::kClientGone;
+        if (context->IsCancelled()) return WhyCallEnded(context);
         break;
     }
   }
 }
 
+// A download cut short gives the result back to the job, so it can be fetched again with
+// GetResult (until --result_ttl passes).
 template <typename Writer>
-grpc::Status StreamResult(JobResult& result, Writer* writer) {
+grpc::Status StreamResult(Job& job, JobResult result, Writer* writer) {
   v1::SmoothResponse response;
-  *response.mutable_result() = std::move(result.summary);
+  *response.mutable_result() = result.summary;
   if (!writer->Write(response)) {
+    job.RestoreResult(std::move(result));
     return grpc::Status(grpc::StatusCode::CANCELLED, "the client went away before the result");
   }
   const bool sent =
@@ -104,6 +114,7 @@ grpc::Status StreamResult(JobResult& result, Writer* writer) {
                          return writer->Write(message);
                        });
   if (!sent) {
+    job.RestoreResult(std::move(result));
     return grpc::Status(grpc::StatusCode::CANCELLED,
                         "the client went away while the result was streamed");
   }
@@ -121,6 +132,12 @@ absl::StatusOr<std::string> SmootherService::CallerOf(const grpc::ServerContext&
   return authenticator_.Authenticate(authorization);
 }
 
+absl::Status SmootherService::RefuseWhileDraining() const {
+  // Before the upload: a draining server does not read a mesh it will not queue.
+  if (registry_.accepting()) return absl::OkStatus();
+  return absl::UnavailableError("the server is shutting down and accepts no new jobs");
+}
+
 absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::SmoothHeader& header,
                                                                 v1::Mesh mesh) {
   return server::CreateJob(header, std::move(mesh), registry_, options_, metrics_);
@@ -131,9 +148,13 @@ grpc::Status SmootherService::Smooth(
     grpc::ServerReaderWriter<v1::SmoothResponse, v1::SmoothRequest>* stream) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
+  if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
+  absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::SmoothHeader header;
   v1::Mesh mesh;
-  if (auto s = ReadUpload<v1::SmoothRequest>(context, stream, options_.max_elements, header, mesh);
+  if (auto s = ReadUpload<v1::SmoothRequest>(context, stream, options_.max_elements,
+                                             UploadMeter(options_, &registry_), header, mesh);
       !s.ok()) {
     return ToGrpcStatus(s);
   }
@@ -162,7 +183,7 @@ grpc::Status SmootherService::Smooth(
   }
   absl::StatusOr<JobResult> result = (*job)->TakeResult();
   if (!result.ok()) return ToGrpcStatus(result.status());
-  return StreamResult(*result, stream);
+  return StreamResult(**job, *std::move(result), stream);
 }
 
 grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
@@ -170,9 +191,13 @@ grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
                                         v1::Job* job_out) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
+  if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
+  absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::SmoothHeader header;
   v1::Mesh mesh;
-  if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements, header, mesh);
+  if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements,
+                                             UploadMeter(options_, &registry_), header, mesh);
       !s.ok()) {
     return ToGrpcStatus(s);
   }
@@ -190,6 +215,8 @@ grpc::Status SmootherService::WatchJob(grpc::ServerContext* context,
                                        grpc::ServerWriter<v1::ProgressEvent>* writer) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
@@ -240,12 +267,14 @@ grpc::Status SmootherService::GetResult(grpc::ServerContext* context,
                                         grpc::ServerWriter<v1::SmoothResponse>* writer) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   absl::StatusOr<JobResult> result = (*job)->TakeResult();
   if (!result.ok()) return ToGrpcStatus(result.status());
   spdlog::info("job={} result fetched", (*job)->id());
-  return StreamResult(*result, writer);
+  return StreamResult(**job, *std::move(result), writer);
 }
 
 grpc::Status SmootherService::EvaluateQuality(
@@ -253,10 +282,12 @@ grpc::Status SmootherService::EvaluateQuality(
     v1::QualityReport* report) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
+  absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
+  if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::EvaluateQualityHeader header;
   v1::Mesh wire;
   if (auto s = ReadUpload<v1::EvaluateQualityRequest>(context, reader, options_.max_elements,
-                                                      header, wire);
+                                                      UploadMeter(options_, nullptr), header, wire);
       !s.ok()) {
     return ToGrpcStatus(s);
   }

@@ -2,6 +2,7 @@
 
 #include "getme/v1/smoother.grpc.pb.h"
 #include "getme_server/authenticator.h"
+#include "getme_server/client_streams.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
@@ -16,7 +17,11 @@ class SmootherService final : public v1::Smoother::Service {
  public:
   SmootherService(JobRegistry& registry, const ServerOptions& options, ServerMetrics* metrics,
                   const Authenticator& authenticator)
-      : registry_(registry), options_(options), metrics_(metrics), authenticator_(authenticator) {}
+      : registry_(registry),
+        options_(options),
+        metrics_(metrics),
+        authenticator_(authenticator),
+        streams_(options.max_streams_per_client) {}
 
   grpc::Status Smooth(
       grpc::ServerContext* context,
@@ -38,6 +43,7 @@ class SmootherService final : public v1::Smoother::Service {
                                v1::QualityReport* report) override;
 
  private:
+  absl::Status RefuseWhileDraining() const;
   absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v1::Mesh mesh);
   absl::StatusOr<std::string> CallerOf(const grpc::ServerContext& context) const;
 
@@ -45,6 +51,7 @@ class SmootherService final : public v1::Smoother::Service {
   const ServerOptions options_;
   ServerMetrics* const metrics_;
   const Authenticator& authenticator_;
+  ClientStreamLimiter streams_;
 };
 
 }  // namespace getme::server

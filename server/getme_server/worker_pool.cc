@@ -2,10 +2,11 @@
 
 namespace getme::server {
 
-WorkerPool::WorkerPool(JobRegistry& registry, int workers) {
+WorkerPool::WorkerPool(JobRegistry& registry, int workers, absl::Duration max_job_time)
+    : time_limit_(max_job_time) {
   for (int i = 0; i < workers; ++i) {
-    threads_.emplace_back([&registry] {
-      while (std::shared_ptr<Job> job = registry.TakeNextQueued()) job->Run();
+    threads_.emplace_back([this, &registry] {
+      while (std::shared_ptr<Job> job = registry.TakeNextQueued()) time_limit_.Run(job);
     });
   }
 }
