@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
       "SIGINT drains it: no new jobs, running jobs may finish within "
       "--shutdown_grace, queued ones are cancelled, exit code 0. Access control (off by default): "
       "TLS with --tls_cert/--tls_key (mutual TLS with --tls_client_ca), bearer tokens and "
-      "per-owner jobs with --auth_tokens_file (docs/reliability-access.md).");
+      "per-owner jobs with --auth_tokens_file (docs/reliability.md).");
   // --help lists this file's flags (Abseil's default looks for a file named after the binary).
   absl::FlagsUsageConfig usage_config;
   usage_config.contains_help_flags = [](absl::string_view file) {

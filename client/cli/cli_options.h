@@ -28,7 +28,7 @@ struct FileOptions {
   bool compress = false;  // .vtu: zlib-compressed blocks
 };
 
-// How `--server` is reached when it has access control on (docs/reliability-access.md): the bearer
+// How `--server` is reached when it has access control on (docs/reliability.md): the bearer
 // token in --token-file (else the GETME_TOKEN environment variable; never a token on the command
 // line, where `ps` shows it), TLS trusting --tls-ca, a client certificate for mutual TLS.
 struct ServerAccessOptions {

@@ -7,7 +7,7 @@
 
 namespace getme::remote {
 
-// How a client reaches a getme-server with access control on (docs/reliability-access.md). The
+// How a client reaches a getme-server with access control on (docs/reliability.md). The
 // default is a plaintext channel without credentials, as to a server on loopback.
 struct ChannelSecurity {
   // Sent as metadata `authorization: Bearer <token>` on every call; empty = none.

@@ -12,7 +12,7 @@ namespace getme::server {
 
 // The bearer tokens of --auth_tokens_file and the owner each one stands for.
 //
-// File format (docs/reliability-access.md): one token per line, either `NAME:TOKEN` (the owner
+// File format (docs/reliability.md): one token per line, either `NAME:TOKEN` (the owner
 // is NAME) or a bare `TOKEN` (the owner is `line<N>`, its line number). Leading and trailing
 // blanks are ignored, as are blank lines and lines starting with '#'. A token is at least
 // kMinTokenLength printable, non-blank ASCII characters; a NAME is [A-Za-z0-9_.@-]+. Two lines

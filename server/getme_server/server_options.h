@@ -26,7 +26,7 @@ struct ServerOptions {
   absl::Duration progress_interval = absl::Milliseconds(100);
   absl::Duration shutdown_grace = absl::Seconds(30);  // SIGTERM: running jobs may finish this long
 
-  // Access control (docs/reliability-access.md); empty strings = off.
+  // Access control (docs/reliability.md); empty strings = off.
   // Bearer tokens (AccessTokens' file format); each job belongs to the owner of its token.
   std::string auth_tokens_file;
   // TLS on both listeners: PEM certificate chain and its unencrypted private key, both or neither.
@@ -34,7 +34,7 @@ struct ServerOptions {
   std::string tls_key;
   // PEM CA certificate(s): clients must present a certificate one of them signed (mTLS).
   std::string tls_client_ca;
-  // Resource limits (docs/reliability-load.md explains the defaults and the memory they bound).
+  // Resource limits (docs/reliability.md explains the defaults and the memory they bound).
   // Largest gRPC message accepted; the clients' chunks are about 1 MiB. More: RESOURCE_EXHAUSTED.
   std::int64_t max_message_bytes = 4 << 20;
   // Encoded bytes of one job's mesh chunks, counted as they arrive. More: RESOURCE_EXHAUSTED.
