@@ -441,6 +441,84 @@ class Errors(unittest.TestCase):
         self.assert_error(context, grpc.StatusCode.DEADLINE_EXCEEDED)
 
 
+def make_certificates(directory):
+    """A CA and a server certificate for 127.0.0.1 (openssl CLI, EC keys); returns the paths."""
+    def openssl(*args):
+        subprocess.run(["openssl", *args], check=True, capture_output=True, timeout=60)
+    paths = {name: os.path.join(directory, name)
+             for name in ("ca.key", "ca.pem", "server.key", "server.csr", "server.pem", "ext")}
+    openssl("req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
+            "-keyout", paths["ca.key"], "-out", paths["ca.pem"], "-days", "1", "-subj", "/CN=test CA")
+    openssl("req", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
+            "-keyout", paths["server.key"], "-out", paths["server.csr"], "-subj", "/CN=127.0.0.1")
+    with open(paths["ext"], "w") as f:
+        f.write("subjectAltName=IP:127.0.0.1,DNS:localhost\n")
+    openssl("x509", "-req", "-in", paths["server.csr"], "-CA", paths["ca.pem"], "-CAkey",
+            paths["ca.key"], "-CAcreateserial", "-out", paths["server.pem"], "-days", "1",
+            "-extfile", paths["ext"])
+    return paths
+
+
+class AccessControl(unittest.TestCase):
+    """The package over TLS with a bearer token: the caller passes its own grpc.Channel, as
+    docs/reliability.md shows; the server owns jobs by token."""
+
+    TOKEN = "alice-0123456789abcdef"
+
+    @classmethod
+    def setUpClass(cls):
+        cls.directory = tempfile.mkdtemp(dir=ARGS.work_dir)
+        cls.paths = make_certificates(cls.directory)
+        tokens = os.path.join(cls.directory, "tokens.txt")
+        with open(tokens, "w") as f:
+            f.write(f"# test tokens\nalice:{cls.TOKEN}\n")
+        cls.server = ServerProcess(ARGS.server_binary, f"--tls_cert={cls.paths['server.pem']}",
+                                   f"--tls_key={cls.paths['server.key']}",
+                                   f"--auth_tokens_file={tokens}", "--http_listen=")
+        with open(cls.paths["ca.pem"], "rb") as f:
+            cls.ca = f.read()
+
+    @classmethod
+    def tearDownClass(cls):
+        code = cls.server.stop()
+        log = "".join(cls.server.log)
+        if code != 0:
+            raise AssertionError(f"getme-server exited {code}:\n{log}")
+        if cls.TOKEN in log:
+            raise AssertionError("the token appears in the server's log")
+
+    def channel(self, token):
+        credentials = grpc.ssl_channel_credentials(root_certificates=self.ca)
+        if token is not None:
+            credentials = grpc.composite_channel_credentials(
+                credentials, grpc.access_token_call_credentials(token))
+        return grpc.secure_channel(self.server.address, credentials)
+
+    def test_token_over_tls_smooths(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        with self.channel(self.TOKEN) as channel:
+            smoothed, report = getme.smooth(mesh, channel)
+        self.assertEqual(report.invalid_elements, 0)
+        self.assertGreaterEqual(report.after.q_min, report.before.q_min)
+        self.assertEqual(smoothed.points.shape, mesh.points.shape)
+
+    def test_wrong_or_missing_token_is_unauthenticated(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        for token in ("mallory-0123456789abcdef", None):
+            with self.subTest(token=token), self.channel(token) as channel:
+                with self.assertRaises(getme.Error) as context:
+                    getme.quality(mesh, channel, timeout=30)
+                self.assertEqual(context.exception.code, grpc.StatusCode.UNAUTHENTICATED)
+                if token is not None:
+                    self.assertNotIn(token, context.exception.details)
+
+    def test_plaintext_is_refused(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        with self.assertRaises(getme.Error) as context:
+            getme.quality(mesh, self.server.address, timeout=10)
+        self.assertEqual(context.exception.code, grpc.StatusCode.UNAVAILABLE)
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser()
     parser.add_argument("--package-dir", required=True)
