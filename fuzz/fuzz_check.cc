@@ -46,6 +46,13 @@ void CheckOk(const absl::Status& status, absl::string_view step) {
   if (!status.ok()) Fail(absl::StrCat(step, " failed: ", status.ToString()));
 }
 
+bool Accepted(const absl::Status& status, absl::string_view step) {
+  if (status.ok()) return true;
+  Check(status.code() == absl::StatusCode::kInvalidArgument,
+        absl::StrCat(step, ": a refusal other than InvalidArgument: ", status.ToString()));
+  return false;
+}
+
 void QuietLogging() { spdlog::set_level(spdlog::level::off); }
 
 void CheckSameGeometry(const formats::VtkFile& expected, const formats::VtkFile& actual,

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "absl/status/status.h"
+#include "absl/status/statusor.h"
+#include "absl/strings/str_cat.h"
 #include "absl/strings/string_view.h"
 #include "formats/mesh_document.h"
 #include "formats/vtk_file.h"
@@ -21,6 +23,26 @@ inline void Check(bool condition, absl::string_view what) {
 }
 // A step that must succeed on what an earlier step accepted.
 void CheckOk(const absl::Status& status, absl::string_view step);
+
+// A step on fuzzed input: true when it accepted the input; a refusal must be InvalidArgument.
+bool Accepted(const absl::Status& status, absl::string_view step);
+
+// What a reader accepted, the writer writes, the reader reads back with the same content (`same`
+// compares and reports, naming `what`), and writing that again gives the same bytes. With
+// `may_refuse`, the first write may refuse (InvalidArgument only) what the variant cannot hold.
+template <class Document, class Serialize, class Parse, class Same>
+void CheckWriteReadFixedPoint(const Document& document, Serialize serialize, Parse parse, Same same,
+                              absl::string_view what, bool may_refuse = false) {
+  absl::StatusOr<std::string> text = serialize(document);
+  if (may_refuse && !Accepted(text.status(), absl::StrCat("writing ", what))) return;
+  CheckOk(text.status(), absl::StrCat("writing ", what, " of a parsed file"));
+  absl::StatusOr<Document> again = parse(*text);
+  CheckOk(again.status(), absl::StrCat("reading the written ", what));
+  same(document, *again, absl::StrCat(what, " round trip"));
+  absl::StatusOr<std::string> text_again = serialize(*again);
+  CheckOk(text_again.status(), absl::StrCat("writing ", what, " of a round trip"));
+  Check(*text_again == *text, absl::StrCat(what, " output is not a fixed point"));
+}
 
 // Silences the writers' spdlog warnings (what a format cannot hold), which would otherwise cost
 // more than the parsing and flood the fuzzer's output.
