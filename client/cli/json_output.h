@@ -5,6 +5,7 @@
 #include <string>
 
 #include "absl/strings/string_view.h"
+#include "getme/json_string.h"
 
 namespace getme::cli {
 
@@ -29,7 +30,6 @@ class JsonObject {
   std::string text_ = "{";
 };
 
-std::string JsonString(absl::string_view value);
 std::string JsonNumber(double value);
 std::string JsonIntArray(std::span<const std::int64_t> values);
 
