@@ -154,15 +154,6 @@ TEST(HttpAuthTest, TokensNeverReachTheLog) {
   EXPECT_THAT(text, Not(HasSubstr("access_token")));
 }
 
-ServerOptions HttpsOptions(bool mutual) {
-  const TestCertificates& certificates = GetTestCertificates();
-  ServerOptions options = TestOptions();
-  options.tls_cert = certificates.server_cert;
-  options.tls_key = certificates.server_key;
-  if (mutual) options.tls_client_ca = certificates.ca_cert;
-  return options;
-}
-
 // An HTTPS client trusting the test CA, with a client certificate when asked.
 std::unique_ptr<httplib::SSLClient> HttpsClient(int port, bool client_certificate) {
   const TestCertificates& certificates = GetTestCertificates();
@@ -178,7 +169,7 @@ std::unique_ptr<httplib::SSLClient> HttpsClient(int port, bool client_certificat
 }
 
 TEST(HttpsTest, PlainHttpIsRefusedHttpsWithTheCaServesAJob) {
-  ServerOptions options = HttpsOptions(/*mutual=*/false);
+  ServerOptions options = TlsServerOptions(/*mutual=*/false);
   options.http_listen = "127.0.0.1:0";
   TestServer test = StartTestServer(options);
   ASSERT_NE(test.server, nullptr);
@@ -212,7 +203,7 @@ TEST(HttpsTest, PlainHttpIsRefusedHttpsWithTheCaServesAJob) {
 }
 
 TEST(HttpsTest, MutualTlsNeedsAClientCertificate) {
-  ServerOptions options = HttpsOptions(/*mutual=*/true);
+  ServerOptions options = TlsServerOptions(/*mutual=*/true);
   options.http_listen = "127.0.0.1:0";
   TestServer test = StartTestServer(options);
   ASSERT_NE(test.server, nullptr);

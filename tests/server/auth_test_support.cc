@@ -6,6 +6,7 @@
 #include "grpcpp/create_channel.h"
 #include "grpcpp/support/client_interceptor.h"
 #include "gtest/gtest.h"
+#include "server_test_support.h"
 #include "test_certificates.h"
 
 namespace getme::server::testing {
@@ -80,6 +81,15 @@ std::shared_ptr<grpc::ChannelCredentials> TlsCredentials(const std::string& ca_c
     ssl.pem_private_key = ReadTextFile(client_key);
   }
   return grpc::SslCredentials(ssl);
+}
+
+ServerOptions TlsServerOptions(bool mutual) {
+  const TestCertificates& certificates = GetTestCertificates();
+  ServerOptions options = TestOptions();
+  options.tls_cert = certificates.server_cert;
+  options.tls_key = certificates.server_key;
+  if (mutual) options.tls_client_ca = certificates.ca_cert;
+  return options;
 }
 
 }  // namespace getme::server::testing

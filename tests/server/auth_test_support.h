@@ -4,6 +4,7 @@
 #include <string>
 
 #include "getme/v1/smoother.grpc.pb.h"
+#include "getme_server/server_options.h"
 #include "grpcpp/channel.h"
 #include "grpcpp/security/credentials.h"
 
@@ -31,5 +32,9 @@ std::unique_ptr<v1::Smoother::Stub> StubWithToken(int port, const std::string& t
 std::shared_ptr<grpc::ChannelCredentials> TlsCredentials(const std::string& ca_cert,
                                                          const std::string& client_cert = "",
                                                          const std::string& client_key = "");
+
+// TestOptions() with TLS from the test certificates on both listeners; with `mutual`, clients
+// must present a certificate of the test CA.
+ServerOptions TlsServerOptions(bool mutual);
 
 }  // namespace getme::server::testing

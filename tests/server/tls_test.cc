@@ -15,15 +15,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-ServerOptions TlsOptions(bool mutual) {
-  const TestCertificates& certificates = GetTestCertificates();
-  ServerOptions options = TestOptions();
-  options.tls_cert = certificates.server_cert;
-  options.tls_key = certificates.server_key;
-  if (mutual) options.tls_client_ca = certificates.ca_cert;
-  return options;
-}
-
 grpc::Status ListJobs(const std::shared_ptr<grpc::Channel>& channel) {
   auto stub = v1::Smoother::NewStub(channel);
   grpc::ClientContext context;
@@ -34,7 +25,7 @@ grpc::Status ListJobs(const std::shared_ptr<grpc::Channel>& channel) {
 
 TEST(TlsTest, PlaintextAndUntrustingClientsAreRefusedTrustingOnesSmooth) {
   const TestCertificates& certificates = GetTestCertificates();
-  ServerOptions options = TlsOptions(/*mutual=*/false);
+  ServerOptions options = TlsServerOptions(/*mutual=*/false);
   options.auth_tokens_file = TokensFile();
   TestServer test = StartTestServer(options);
   ASSERT_NE(test.server, nullptr);
@@ -63,7 +54,7 @@ TEST(TlsTest, PlaintextAndUntrustingClientsAreRefusedTrustingOnesSmooth) {
 
 TEST(TlsTest, MutualTlsRefusesClientsWithoutACertificateFromTheCa) {
   const TestCertificates& certificates = GetTestCertificates();
-  TestServer test = StartTestServer(TlsOptions(/*mutual=*/true));
+  TestServer test = StartTestServer(TlsServerOptions(/*mutual=*/true));
   ASSERT_NE(test.server, nullptr);
   const int port = test.server->port();
   EXPECT_EQ(ListJobs(ChannelWithToken(port, "", TlsCredentials(certificates.ca_cert))).error_code(),
