@@ -23,13 +23,15 @@ read -ra sanitizer_filter <<< "${GETME_SANITIZER_CTEST_ARGS--LE slow}"
 
 summary=()
 failed=0
+failed_reports=()
 
 # run_stage NAME SANITIZER [ctest filter...]: builds one variant and runs its tests.
 run_stage() {
   local name="$1" sanitizer="$2"
   shift 2
-  local build_dir start build_seconds result
+  local build_dir start build_seconds result junit
   build_dir="$(build_dir_for "$sanitizer")"
+  junit="$build_dir/Testing/ctest-junit.xml"
   start=$SECONDS
   result=passed
   bash "$GETME_ROOT/scripts/build.sh" ${sanitizer:+--sanitize "$sanitizer"} ||
@@ -37,9 +39,12 @@ run_stage() {
   build_seconds=$((SECONDS - start))
   if [ "$result" = passed ]; then
     log "Testing $name ($build_dir${*:+, ctest $*})"
+    rm -f "$junit"
     run_instrumented "$sanitizer" ctest --test-dir "$build_dir" --output-on-failure \
-      --no-tests=error --parallel "$(build_jobs)" "$@" || result="FAILED (tests)"
+      --output-junit "$junit" --no-tests=error --parallel "$(build_jobs)" "$@" ||
+      result="FAILED (tests)"
   fi
+  [ "$result" != "FAILED (tests)" ] || failed_reports+=("$name=$junit")
   [ "$result" = passed ] || failed=1
   summary+=("$(printf '%-10s %-16s build %5ds  tests %5ds' "$name" "$result" "$build_seconds" \
     $((SECONDS - start - build_seconds)))")
@@ -72,6 +77,12 @@ if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ] || [ "$fuzz_seconds" = 0 ]; then
 else
   run_fuzz_stage "$fuzz_seconds"
 fi
+
+# The failed tests and why, last but for the summary: a CI log is often seen only by its tail.
+for report in "${failed_reports[@]}"; do
+  log "Failed tests of ${report%%=*}"
+  /usr/bin/python3 "$GETME_ROOT/scripts/ctest_failures.py" "${report#*=}"
+done
 
 log "Summary (total ${SECONDS}s)"
 printf '%s\n' "${summary[@]}"

@@ -270,7 +270,7 @@ void HttpGateway::AddRoutes() {
   });
   http_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
     JobsNow now{registry_.ListAllOwners(), registry_.QueuedCount(), options_.workers,
-                registry_.accepting()};
+                registry_.accepting(), ReadProcessMemory()};
     res.set_content(PrometheusText(metrics_.Read(), now), "text/plain; version=0.0.4");
   });
 

@@ -54,13 +54,13 @@ void Job::Publish(v1::ProgressEvent event) {
   fanout_.Publish(event);
 }
 
-void Job::Run() {
+void Job::Run(absl::Time start) {
   JobResult* work = nullptr;
   {
     std::lock_guard lock(mutex_);
     if (state_ != v1::JOB_STATE_QUEUED) return;
     state_ = v1::JOB_STATE_RUNNING;
-    started_ = absl::Now();
+    started_ = start;
     work = result_.get();
   }
   spdlog::info("job={} phase=start nodes={} elements={} method={} threads={}", id_, nodes_,

@@ -9,6 +9,7 @@
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
+#include "absl/time/clock.h"
 #include "absl/time/time.h"
 #include "getme/mesh.h"
 #include "getme/progress.h"
@@ -43,7 +44,8 @@ class Job {
   std::int64_t upload_bytes() const { return upload_bytes_; }
 
   // Runs the engine on the calling (worker) thread; returns at once unless the job is QUEUED.
-  void Run();
+  // `start` is the start time the job reports; --max_job_time counts from the same instant.
+  void Run(absl::Time start = absl::Now());
   // Queued: CANCELLED at once. Running: the engine stops within one iteration. Final: no-op.
   void Cancel(absl::string_view reason);
   // Running: the engine stops within one iteration and the job FAILS with DEADLINE_EXCEEDED

@@ -7,6 +7,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
 #include "absl/time/clock.h"
+#include "getme_server/process_memory.h"
 
 namespace getme::server {
 
@@ -180,6 +181,11 @@ void JobRegistry::SweepLoop() {
     for (const std::string& id : forget) jobs_.erase(id);
     std::erase_if(submission_order_,
                   [this](const auto& job) { return !jobs_.contains(job->id()); });
+    if (!forget.empty()) {
+      lock.unlock();
+      ReleaseFreedHeapMemory();
+      lock.lock();
+    }
   }
 }
 

@@ -23,13 +23,14 @@ void JobTimeLimit::Run(const std::shared_ptr<Job>& job) {
     return;
   }
   std::uint64_t run = 0;
+  const absl::Time start = absl::Now();
   {
     std::lock_guard lock(mutex_);
     run = ++runs_;
-    running_.emplace(run, Running{absl::Now() + limit_, job});
+    running_.emplace(run, Running{start + limit_, job});
   }
   changed_.notify_all();
-  job->Run();
+  job->Run(start);
   std::lock_guard lock(mutex_);
   running_.erase(run);
 }

@@ -88,6 +88,17 @@ std::string PrometheusText(const ServerMetrics::Snapshot& counters, const JobsNo
   absl::StrAppend(&out, "getme_job_duration_seconds_sum ", Number(counters.durations.sum), "\n");
   absl::StrAppend(&out, "getme_job_duration_seconds_count ", counters.durations.count, "\n");
 
+  if (now.memory.resident_bytes >= 0) {
+    Header(out, "process_resident_memory_bytes", "gauge", "Resident memory size in bytes.");
+    absl::StrAppend(&out, "process_resident_memory_bytes ", now.memory.resident_bytes, "\n");
+  }
+  if (now.memory.heap_in_use_bytes >= 0) {
+    Header(out, "getme_heap_in_use_bytes", "gauge",
+           "Bytes the allocator has handed out and not got back (glibc mallinfo2): what grows "
+           "with a leak, unlike resident memory, which also holds freed memory kept for reuse.");
+    absl::StrAppend(&out, "getme_heap_in_use_bytes ", now.memory.heap_in_use_bytes, "\n");
+  }
+
   Header(out, "getme_rpcs_total", "counter", "gRPC calls finished, by method and status code.");
   for (const auto& [key, count] : counters.rpcs) {
     absl::StrAppend(&out, "getme_rpcs_total{method=\"", LabelValue(key.first), "\",code=\"",

@@ -6,16 +6,19 @@
 #include <vector>
 
 #include "getme_server/job.h"
+#include "getme_server/process_memory.h"
 #include "getme_server/server_metrics.h"
 
 namespace getme::server {
 
-// What GET /metrics shows besides the counters: the registry's jobs at scrape time.
+// What GET /metrics shows besides the counters: the registry's jobs and the process's memory at
+// scrape time.
 struct JobsNow {
   std::vector<std::shared_ptr<Job>> jobs;
   std::int64_t queued = 0;
   int workers = 0;
   bool ready = true;
+  ProcessMemory memory;
 };
 
 // Prometheus text exposition format 0.0.4 (docs/http.md lists every metric).

@@ -1,10 +1,11 @@
 // GET /metrics: Prometheus text format 0.0.4 whose numbers follow what the server did.
+#include <cstring>
+#include <fstream>
 #include <map>
-#include <regex>
+#include <memory>
 #include <string>
 
-#include "absl/strings/numbers.h"
-#include "absl/strings/str_split.h"
+#include "getme_server/process_memory.h"
 #include "gmock/gmock.h"
 #include "grpcpp/client_context.h"
 #include "gtest/gtest.h"
@@ -13,45 +14,11 @@
 namespace getme::server::testing {
 namespace {
 
-// Every sample line "name{labels} value" by "name{labels}"; fails the test on a line that is
-// neither a sample nor a # HELP / # TYPE comment, or a sample without a TYPE before it.
-std::map<std::string, double> ParseMetrics(const std::string& text) {
-  const std::regex sample(
-      R"re(([a-zA-Z_:][a-zA-Z0-9_:]*)(\{([a-zA-Z_][a-zA-Z0-9_]*="([^"\\]|\\.)*",?)*\})? (\S+))re");
-  const std::regex type(R"(# TYPE ([a-zA-Z_:][a-zA-Z0-9_:]*) (counter|gauge|histogram))");
-  std::map<std::string, double> samples;
-  std::string typed;
-  for (absl::string_view view : absl::StrSplit(text, '\n', absl::SkipEmpty())) {
-    const std::string line(view);
-    std::smatch match;
-    if (std::regex_match(line, match, type)) {
-      typed = match[1];
-    } else if (line.starts_with("# HELP ")) {
-      continue;
-    } else if (std::regex_match(line, match, sample)) {
-      EXPECT_TRUE(match[1].str().starts_with(typed)) << line << " has no # TYPE";
-      double value = 0;
-      EXPECT_TRUE(absl::SimpleAtod(match[5].str(), &value)) << line;
-      samples[match[1].str() + match[2].str()] = value;
-    } else {
-      ADD_FAILURE() << "not Prometheus text: " << line;
-    }
-  }
-  return samples;
-}
-
-std::map<std::string, double> Scrape(httplib::Client& client) {
-  const HttpReply reply = HttpGet(client, "/metrics");
-  EXPECT_EQ(reply.status, 200);
-  EXPECT_EQ(reply.content_type, "text/plain; version=0.0.4");
-  return ParseMetrics(reply.body);
-}
-
 TEST(HttpMetricsTest, CountersFollowRpcsJobsAndWork) {
   ServerOptions options = TestOptions();
   options.workers = 3;
   HttpTestServer test = StartHttpTestServer(options);
-  const auto before = Scrape(*test.http);
+  const auto before = ScrapeMetrics(*test.http);
   EXPECT_EQ(before.at("getme_workers"), 3);
   EXPECT_EQ(before.at("getme_ready"), 1);
   EXPECT_EQ(before.at("getme_element_iterations_total"), 0);
@@ -76,7 +43,7 @@ TEST(HttpMetricsTest, CountersFollowRpcsJobsAndWork) {
   ASSERT_TRUE(running.ok());
   WaitForState(*test.grpc.stub, running->job_id(), v1::JOB_STATE_RUNNING);
   absl::SleepFor(absl::Milliseconds(200));
-  auto during = Scrape(*test.http);
+  auto during = ScrapeMetrics(*test.http);
   EXPECT_EQ(during.at("getme_active_workers"), 1);
   EXPECT_EQ(during.at(R"(getme_jobs{state="running"})"), 1);
   EXPECT_EQ(during.at(R"(getme_jobs{state="succeeded"})"), 1);
@@ -92,7 +59,7 @@ TEST(HttpMetricsTest, CountersFollowRpcsJobsAndWork) {
 
   ASSERT_EQ(HttpPost(*test.http, "/v1/jobs/" + running->job_id() + ":cancel", "").status, 200);
   WaitForState(*test.grpc.stub, running->job_id(), v1::JOB_STATE_CANCELLED);
-  const auto after = Scrape(*test.http);
+  const auto after = ScrapeMetrics(*test.http);
   EXPECT_EQ(after.at("getme_active_workers"), 0);
   EXPECT_EQ(after.at(R"(getme_jobs_finished_total{state="cancelled"})"), 1);
   EXPECT_EQ(after.at("getme_job_duration_seconds_count"), 2);
@@ -113,9 +80,54 @@ TEST(HttpMetricsTest, ElementIterationsOfASimultaneousJobAreElementsTimesIterati
       CallSmooth(*test.grpc.stub, SmoothRequests(ToWire(SmallHybridMesh()), parameters));
   ASSERT_TRUE(smoothed.status.ok());
   ASSERT_EQ(smoothed.result.iterations_untangle(), 0);
-  EXPECT_EQ(Scrape(*test.http).at("getme_element_iterations_total"),
+  EXPECT_EQ(ScrapeMetrics(*test.http).at("getme_element_iterations_total"),
             static_cast<double>(smoothed.result.after().elements() *
                                 smoothed.result.iterations_simultaneous()));
+}
+
+// VmRSS from /proc/self/status (the gauge reads /proc/self/statm), in bytes; -1 if absent.
+double OwnResidentBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmRSS:") {
+      double kib = 0;
+      status >> kib;
+      return kib * 1024;
+    }
+  }
+  return -1;
+}
+
+// The server runs in this process: its memory gauges must follow a block this test allocates.
+TEST(HttpMetricsTest, MemoryGaugesFollowTheProcess) {
+  constexpr double kMiB = 1 << 20;
+  HttpTestServer test = StartHttpTestServer();
+  const auto before = ScrapeMetrics(*test.http);
+  ASSERT_TRUE(before.contains("process_resident_memory_bytes"));
+  const double own_resident = OwnResidentBytes();
+  EXPECT_NEAR(before.at("process_resident_memory_bytes"), own_resident,
+              0.1 * own_resident + 4 * kMiB);
+  if constexpr (!kHeapCountsKnown) {
+    EXPECT_FALSE(before.contains("getme_heap_in_use_bytes")) << "a sanitizer's allocator";
+    return;
+  }
+
+  // 64 MiB is above glibc's largest mmap threshold: a mapping of its own, unmapped on free.
+  constexpr std::size_t kBlock = 64 << 20;
+  auto block = std::make_unique_for_overwrite<char[]>(kBlock);
+  std::memset(block.get(), 1, kBlock);  // resident, not only reserved
+  const auto holding = ScrapeMetrics(*test.http);
+  EXPECT_NEAR(holding.at("getme_heap_in_use_bytes") - before.at("getme_heap_in_use_bytes"),
+              static_cast<double>(kBlock), 2 * kMiB);
+  EXPECT_GE(
+      holding.at("process_resident_memory_bytes") - before.at("process_resident_memory_bytes"),
+      0.95 * kBlock);
+  block.reset();
+  const auto after = ScrapeMetrics(*test.http);
+  EXPECT_NEAR(after.at("getme_heap_in_use_bytes"), before.at("getme_heap_in_use_bytes"), 2 * kMiB);
+  EXPECT_LE(after.at("process_resident_memory_bytes"),
+            holding.at("process_resident_memory_bytes") - 0.95 * kBlock);
 }
 
 }  // namespace

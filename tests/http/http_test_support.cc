@@ -1,5 +1,8 @@
 #include "http_test_support.h"
 
+#include <regex>
+
+#include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
 #include "absl/strings/strip.h"
@@ -32,6 +35,42 @@ HttpReply HttpPost(httplib::Client& client, const std::string& path, const std::
     reply = {result->status, result->body, result->get_header_value("Content-Type")};
   }
   return reply;
+}
+
+namespace {
+
+std::map<std::string, double> ParseMetrics(const std::string& text) {
+  const std::regex sample(
+      R"re(([a-zA-Z_:][a-zA-Z0-9_:]*)(\{([a-zA-Z_][a-zA-Z0-9_]*="([^"\\]|\\.)*",?)*\})? (\S+))re");
+  const std::regex type(R"(# TYPE ([a-zA-Z_:][a-zA-Z0-9_:]*) (counter|gauge|histogram))");
+  std::map<std::string, double> samples;
+  std::string typed;
+  for (absl::string_view view : absl::StrSplit(text, '\n', absl::SkipEmpty())) {
+    const std::string line(view);
+    std::smatch match;
+    if (std::regex_match(line, match, type)) {
+      typed = match[1];
+    } else if (line.starts_with("# HELP ")) {
+      continue;
+    } else if (std::regex_match(line, match, sample)) {
+      EXPECT_TRUE(match[1].str().starts_with(typed)) << line << " has no # TYPE";
+      double value = 0;
+      EXPECT_TRUE(absl::SimpleAtod(match[5].str(), &value)) << line;
+      samples[match[1].str() + match[2].str()] = value;
+    } else {
+      ADD_FAILURE() << "not Prometheus text: " << line;
+    }
+  }
+  return samples;
+}
+
+}  // namespace
+
+std::map<std::string, double> ScrapeMetrics(httplib::Client& client) {
+  const HttpReply reply = HttpGet(client, "/metrics");
+  EXPECT_EQ(reply.status, 200);
+  EXPECT_EQ(reply.content_type, "text/plain; version=0.0.4");
+  return ParseMetrics(reply.body);
 }
 
 std::string CreateJobJson(const v1::Mesh& mesh, const v1::SmoothingParameters& parameters) {

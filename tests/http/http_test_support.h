@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ Message ParseJson(const std::string& json) {
   EXPECT_TRUE(status.ok()) << status.ToString() << " in " << json;
   return message;
 }
+
+// GET /metrics parsed: every sample "name{labels} value" by "name{labels}". Fails the test on a
+// status other than 200, a line that is neither a sample nor a # HELP / # TYPE comment, or a
+// sample without a # TYPE before it.
+std::map<std::string, double> ScrapeMetrics(httplib::Client& client);
 
 // The JSON body of POST /v1/jobs for a mesh.
 std::string CreateJobJson(const v1::Mesh& mesh, const v1::SmoothingParameters& parameters);

@@ -50,15 +50,28 @@ std::string ReadFile(const std::string& path) {
   return text.str();
 }
 
-int WaitForPort(const std::string& log_path) {
-  const std::regex listening("listening on port ([0-9]+)");
+namespace {
+
+// The number the first match of `pattern` captures in the log, waiting up to 10 s; 0 if none.
+int WaitForLoggedNumber(const std::string& log_path, const std::regex& pattern) {
   for (int attempt = 0; attempt < 500; ++attempt) {
     std::smatch match;
     const std::string contents = ReadFile(log_path);
-    if (std::regex_search(contents, match, listening)) return std::stoi(match[1]);
+    if (std::regex_search(contents, match, pattern)) return std::stoi(match[1]);
     absl::SleepFor(absl::Milliseconds(20));
   }
   return 0;
+}
+
+}  // namespace
+
+int WaitForPort(const std::string& log_path) {
+  return WaitForLoggedNumber(log_path, std::regex("listening on port ([0-9]+)"));
+}
+
+int WaitForHttpPort(const std::string& log_path) {
+  return WaitForLoggedNumber(log_path,
+                             std::regex("HTTP gateway and dashboard at .* \\(port ([0-9]+)\\)"));
 }
 
 int WaitForExit(pid_t pid, absl::Duration timeout) {

@@ -21,6 +21,8 @@ ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::st
                           const std::vector<std::string>& environment = {});
 // The gRPC port from the "listening on port N" log line; 0 if it does not appear in time.
 int WaitForPort(const std::string& log_path);
+// The HTTP gateway's port (--http_listen) from its log line; 0 if it does not appear in time.
+int WaitForHttpPort(const std::string& log_path);
 // The exit code (128 + signal when killed); -1 after `timeout` (the process is then killed).
 int WaitForExit(pid_t pid, absl::Duration timeout);
 std::string ReadFile(const std::string& path);
