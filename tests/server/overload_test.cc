@@ -162,13 +162,28 @@ TEST(OverloadTest, ClientVanishingMidUploadLeavesNoJobAndNoStreamBehind) {
   }
   ASSERT_GT(chunked.size(), 6u);
 
-  for (int round = 0; round < 5; ++round) {
+  // Half an upload, then the client cancels: CANCELLED. The server frees the previous round's
+  // stream slot when its handler sees that cancel, which may come after the next call arrives;
+  // that call is then refused (RESOURCE_EXHAUSTED naming the limit) and the round is retried.
+  auto upload_half_then_vanish = [&] {
     grpc::ClientContext context;
     v1::Job job;
     auto writer = test.stub->SubmitJob(&context, &job);
-    for (std::size_t i = 0; i < chunked.size() / 2; ++i) ASSERT_TRUE(writer->Write(chunked[i]));
+    for (std::size_t i = 0; i < chunked.size() / 2; ++i) {
+      if (!writer->Write(chunked[i])) break;  // refused: Finish tells why
+    }
     context.TryCancel();
-    EXPECT_EQ(writer->Finish().error_code(), grpc::StatusCode::CANCELLED);
+    return writer->Finish();
+  };
+  for (int round = 0; round < 5; ++round) {
+    grpc::Status status = upload_half_then_vanish();
+    for (int retry = 0; retry < 100 && status.error_code() == grpc::StatusCode::RESOURCE_EXHAUSTED;
+         ++retry) {
+      EXPECT_THAT(status.error_message(), HasSubstr("--max_streams_per_client"));
+      absl::SleepFor(absl::Milliseconds(20));
+      status = upload_half_then_vanish();
+    }
+    EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED) << status.error_message();
   }
   EXPECT_EQ(ListJobs(*test.stub).size(), 0u);
   // The server frees a stream when its handler sees the cancel: poll, then a whole job runs.
