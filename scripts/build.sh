@@ -56,7 +56,7 @@ else
   # the fuzz targets (fuzz/, scripts/fuzz.sh), so CI compiles the readers once for both.
   build_type="RelWithDebInfo, -O1 -g1, clang-14"
   configure+=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
-    -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14)
+    -DCMAKE_CXX_COMPILER=clang++-14)
   # A directory configured with another compiler cannot switch: CMake would drop its cache halfway.
   if [ -f "$build_dir/CMakeCache.txt" ] &&
     ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$build_dir/CMakeCache.txt"; then
