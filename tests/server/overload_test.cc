@@ -2,6 +2,7 @@
 // clients at once, clients that vanish mid-upload or mid-download, and a watcher that never reads.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -83,7 +84,13 @@ TEST(OverloadTest, ManyClientsOverrunningTheQueueLoseAndDuplicateNoJob) {
   std::vector<std::thread> clients;
   for (int c = 0; c < kClients; ++c) {
     clients.emplace_back([&, c] {
-      auto stub = v1::Smoother::NewStub(NewChannel(test));
+      // Connected before the race starts: this test is about the queue. Sixteen connects at once
+      // on a loaded machine once had one fail at once ("failed to connect to all addresses"),
+      // and a channel's first call does not wait for its reconnect; WaitForConnected does.
+      std::shared_ptr<grpc::Channel> channel = NewChannel(test);
+      EXPECT_TRUE(
+          channel->WaitForConnected(std::chrono::system_clock::now() + std::chrono::seconds(30)));
+      auto stub = v1::Smoother::NewStub(channel);
       ++ready;
       while (ready.load() < kClients) std::this_thread::yield();  // all start at once
       for (int j = 0; j < kJobsPerClient; ++j) {
