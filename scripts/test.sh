@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds, and runs the whole test suite: the Release build (build/),
 # then ASan+UBSan (build-asan/), then TSan (build-tsan/) on the tests of threaded code (label
-# `threads`); then a short run of every libFuzzer target (scripts/fuzz.sh, build-asan/). Exits nonzero if any build, test or fuzz target
-# fails; every stage still runs, and a summary with timings comes last.
+# `threads`); then a short run of every libFuzzer target (scripts/fuzz.sh, build-asan/). Exits
+# nonzero if any build, test or fuzz target fails; every stage still runs, and the failed tests
+# and a summary with timings come last.
 # Environment:
 #   GETME_SKIP_SANITIZERS=1      run the Release suite only (no sanitizer or fuzz stage)
 #   GETME_FUZZ_SECONDS           seconds per fuzz target in the fuzz stage (default 10; 0 skips it)

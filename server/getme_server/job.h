@@ -9,7 +9,6 @@
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
-#include "absl/time/clock.h"
 #include "absl/time/time.h"
 #include "getme/mesh.h"
 #include "getme/progress.h"
@@ -45,7 +44,7 @@ class Job {
 
   // Runs the engine on the calling (worker) thread; returns at once unless the job is QUEUED.
   // `start` is the start time the job reports; --max_job_time counts from the same instant.
-  void Run(absl::Time start = absl::Now());
+  void Run(absl::Time start);
   // Queued: CANCELLED at once. Running: the engine stops within one iteration. Final: no-op.
   void Cancel(absl::string_view reason);
   // Running: the engine stops within one iteration and the job FAILS with DEADLINE_EXCEEDED

@@ -18,12 +18,12 @@ JobTimeLimit::~JobTimeLimit() {
 }
 
 void JobTimeLimit::Run(const std::shared_ptr<Job>& job) {
+  const absl::Time start = absl::Now();
   if (limit_ == absl::InfiniteDuration()) {
-    job->Run();
+    job->Run(start);
     return;
   }
   std::uint64_t run = 0;
-  const absl::Time start = absl::Now();
   {
     std::lock_guard lock(mutex_);
     run = ++runs_;

@@ -1,6 +1,7 @@
 // GET /metrics: Prometheus text format 0.0.4 whose numbers follow what the server did.
+#include <unistd.h>
+
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 #include "grpcpp/client_context.h"
 #include "gtest/gtest.h"
 #include "http_test_support.h"
+#include "server_process.h"
 
 namespace getme::server::testing {
 namespace {
@@ -85,27 +87,14 @@ TEST(HttpMetricsTest, ElementIterationsOfASimultaneousJobAreElementsTimesIterati
                                 smoothed.result.iterations_simultaneous()));
 }
 
-// VmRSS from /proc/self/status (the gauge reads /proc/self/statm), in bytes; -1 if absent.
-double OwnResidentBytes() {
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  while (status >> key) {
-    if (key == "VmRSS:") {
-      double kib = 0;
-      status >> kib;
-      return kib * 1024;
-    }
-  }
-  return -1;
-}
-
 // The server runs in this process: its memory gauges must follow a block this test allocates.
 TEST(HttpMetricsTest, MemoryGaugesFollowTheProcess) {
   constexpr double kMiB = 1 << 20;
   HttpTestServer test = StartHttpTestServer();
   const auto before = ScrapeMetrics(*test.http);
   ASSERT_TRUE(before.contains("process_resident_memory_bytes"));
-  const double own_resident = OwnResidentBytes();
+  // VmRSS from /proc/<pid>/status; the gauge reads /proc/self/statm.
+  const double own_resident = 1024.0 * ResidentKiB(getpid());
   EXPECT_NEAR(before.at("process_resident_memory_bytes"), own_resident,
               0.1 * own_resident + 4 * kMiB);
   if constexpr (!kHeapCountsKnown) {
