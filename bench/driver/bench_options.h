@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/smoothing_params.h"
 
 namespace getme::bench {
 

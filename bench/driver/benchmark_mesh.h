@@ -5,7 +5,7 @@
 
 #include "absl/status/statusor.h"
 #include "bench_options.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::bench {
 

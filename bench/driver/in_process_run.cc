@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "peak_memory.h"
 #include "quality_trace.h"
 

@@ -4,7 +4,7 @@
 
 #include "absl/status/statusor.h"
 #include "benchmark_mesh.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/smoothing_params.h"
 #include "run_measurement.h"
 
 namespace getme::bench {

@@ -3,7 +3,7 @@
 #include <optional>
 #include <span>
 
-#include "getme/progress.h"
+#include "getme/smoothing/progress.h"
 
 namespace getme::bench {
 

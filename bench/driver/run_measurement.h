@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "getme/progress.h"
-#include "getme/smoother.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoother.h"
+#include "getme/smoothing/smoothing_params.h"
 
 namespace getme::bench {
 

@@ -11,9 +11,9 @@
 #include "absl/strings/str_format.h"
 #include "formats/vtk_mesh.h"
 #include "formats/vtk_writer.h"
-#include "getme/mesh_quality.h"
+#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/meshgen_command.h"
-#include "getme/thread_pool.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::bench {
 

@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "getme/element_quality.h"
-#include "getme/transform.h"
+#include "getme/elements/element_quality.h"
+#include "getme/elements/transform.h"
 
 namespace getme::bench {
 namespace {

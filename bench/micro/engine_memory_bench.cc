@@ -13,7 +13,7 @@
 
 #include "bench_meshes.h"
 #include "getme/meshgen/distorted_hex_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 
 namespace getme::bench {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "getme/element_tables.h"
+#include "getme/elements/element_tables.h"
 
 namespace getme::bench {
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::bench {
 

@@ -9,8 +9,8 @@
 
 #include "bench_meshes.h"
 #include "floor_pass.h"
-#include "getme/simultaneous_iteration.h"
-#include "getme/smoothing_context.h"
+#include "getme/smoothing/simultaneous_iteration.h"
+#include "getme/smoothing/smoothing_context.h"
 
 namespace getme::bench {
 namespace {

@@ -8,7 +8,7 @@
 #include "absl/status/statusor.h"
 #include "formats/mesh_file.h"
 #include "formats/vtk_file.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/smoothing_params.h"
 
 namespace getme::cli {
 

@@ -4,7 +4,7 @@
 
 #include "absl/status/status.h"
 #include "cli/reports.h"
-#include "getme/progress.h"
+#include "getme/smoothing/progress.h"
 
 namespace getme::cli {
 

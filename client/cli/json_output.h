@@ -5,7 +5,7 @@
 #include <string>
 
 #include "absl/strings/string_view.h"
-#include "getme/json_string.h"
+#include "getme_support/json_string.h"
 
 namespace getme::cli {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "getme/progress.h"
+#include "getme/smoothing/progress.h"
 
 namespace getme::cli {
 

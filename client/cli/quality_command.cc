@@ -8,8 +8,8 @@
 #include "cli/text_reports.h"
 #include "formats/mesh_file.h"
 #include "formats/vtk_mesh.h"
-#include "getme/mesh_quality.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace getme::cli {
 

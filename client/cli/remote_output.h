@@ -8,7 +8,7 @@
 #include "cli/mesh_files.h"
 #include "cli/reports.h"
 #include "formats/vtk_file.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
 #include "remote/wire_mesh.h"
 

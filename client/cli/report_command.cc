@@ -19,8 +19,8 @@
 #include "formats/file_io.h"
 #include "formats/mesh_file.h"
 #include "formats/vtk_mesh.h"
-#include "getme/mesh_quality.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
 #include "spdlog/spdlog.h"
 
 extern char** environ;

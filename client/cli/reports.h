@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "getme/element_type.h"
-#include "getme/mesh_quality.h"
-#include "getme/smoother.h"
-#include "getme/smoothing_params.h"
+#include "getme/elements/element_type.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/smoothing/smoother.h"
+#include "getme/smoothing/smoothing_params.h"
 
 namespace getme::cli {
 

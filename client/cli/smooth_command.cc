@@ -7,7 +7,7 @@
 #include "cli/failure.h"
 #include "cli/smooth_run.h"
 #include "formats/vtk_mesh.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {

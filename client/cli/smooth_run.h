@@ -14,7 +14,7 @@
 #include "cli/reports.h"
 #include "cli/trace_file.h"
 #include "formats/mesh_document.h"
-#include "getme/progress.h"
+#include "getme/smoothing/progress.h"
 
 namespace getme::cli {
 

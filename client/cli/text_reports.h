@@ -3,7 +3,7 @@
 #include <string>
 
 #include "cli/reports.h"
-#include "getme/progress.h"
+#include "getme/smoothing/progress.h"
 
 namespace getme::cli {
 

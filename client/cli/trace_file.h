@@ -5,7 +5,7 @@
 #include <string>
 
 #include "absl/status/statusor.h"
-#include "getme/progress.h"
+#include "getme/smoothing/progress.h"
 
 namespace getme::cli {
 

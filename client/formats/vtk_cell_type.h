@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "absl/strings/string_view.h"
-#include "getme/element_type.h"
+#include "getme/elements/element_type.h"
 
 namespace getme::formats {
 

@@ -9,8 +9,8 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "formats/vtk_cell_type.h"
-#include "getme/element_quality.h"
-#include "getme/vec3.h"
+#include "getme/elements/element_quality.h"
+#include "getme/elements/vec3.h"
 
 namespace getme::formats {
 namespace {

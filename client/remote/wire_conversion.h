@@ -1,9 +1,9 @@
 #pragma once
 
-#include "getme/mesh_quality.h"
-#include "getme/progress.h"
-#include "getme/smoother.h"
-#include "getme/smoothing_params.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoother.h"
+#include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/params.pb.h"
 #include "getme/v1/quality.pb.h"
 #include "getme/v1/smoother.pb.h"

@@ -7,7 +7,7 @@
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
 #include "formats/vtk_file.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "getme/v1/mesh.pb.h"
 
 namespace getme::remote {

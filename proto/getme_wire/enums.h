@@ -2,8 +2,8 @@
 
 #include <optional>
 
-#include "getme/progress.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/params.pb.h"
 #include "getme/v1/smoother.pb.h"
 

@@ -1,7 +1,7 @@
 #include "getme_server/http_json.h"
 
 #include "absl/strings/str_cat.h"
-#include "getme/json_string.h"
+#include "getme_support/json_string.h"
 #include "google/protobuf/util/json_util.h"
 
 namespace getme::server {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "absl/strings/str_cat.h"
-#include "getme/element_type.h"
+#include "getme/elements/element_type.h"
 
 namespace getme::server {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "getme/v1/mesh.pb.h"
 #include "getme/v1/smoother.pb.h"
 

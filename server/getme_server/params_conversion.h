@@ -1,7 +1,7 @@
 #pragma once
 
 #include "absl/status/statusor.h"
-#include "getme/smoothing_params.h"
+#include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/params.pb.h"
 
 namespace getme::server {

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "getme/mesh_quality.h"
-#include "getme/progress.h"
-#include "getme/smoother.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoother.h"
 #include "getme/v1/mesh.pb.h"
 #include "getme/v1/quality.pb.h"
 #include "getme/v1/smoother.pb.h"

@@ -6,8 +6,8 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
-#include "getme/mesh_quality.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
 #include "getme_server/job_submission.h"
 #include "getme_server/mesh_conversion.h"
 #include "getme_server/report_conversion.h"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "getme/mesh_quality.h"
+#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/hybrid_block.h"
-#include "getme/thread_pool.h"
+#include "getme/parallel/thread_pool.h"
 #include "nlohmann/json.hpp"
 
 extern char** environ;

@@ -11,8 +11,8 @@
 
 #include "formats/vtk_mesh.h"
 #include "formats/vtk_reader.h"
-#include "getme/element_quality.h"
-#include "getme/vec3.h"
+#include "getme/elements/element_quality.h"
+#include "getme/elements/vec3.h"
 #include "json_test_parser.h"
 #include "run_getme.h"
 

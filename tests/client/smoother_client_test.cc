@@ -8,7 +8,7 @@
 #include <atomic>
 #include <thread>
 
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "remote/wire_conversion.h"
 #include "remote/wire_mesh.h"
 #include "test_meshes.h"

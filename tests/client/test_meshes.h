@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::remote::testing {
 

@@ -11,8 +11,8 @@
 
 #include "formats/vtk_reader.h"
 #include "formats/vtk_writer.h"
-#include "getme/element_quality.h"
-#include "getme/vec3.h"
+#include "getme/elements/element_quality.h"
+#include "getme/elements/vec3.h"
 #include "vtk_test_util.h"
 
 namespace getme::formats {

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "getme/element_quality.h"
-#include "getme/element_tables.h"
+#include "getme/elements/element_quality.h"
+#include "getme/elements/element_tables.h"
 
 namespace getme::testing {
 

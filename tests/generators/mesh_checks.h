@@ -8,8 +8,8 @@
 #include <map>
 #include <vector>
 
-#include "getme/mesh.h"
-#include "getme/vec3.h"
+#include "getme/mesh/mesh.h"
+#include "getme/elements/vec3.h"
 
 namespace getme::testing {
 

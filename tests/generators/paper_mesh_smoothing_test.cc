@@ -6,7 +6,7 @@
 
 #include "getme/meshgen/plate_with_holes.h"
 #include "getme/meshgen/ring_in_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 
 namespace getme::meshgen {
 namespace {

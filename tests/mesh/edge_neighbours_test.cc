@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "getme/node_neighbours.h"
+#include "getme/mesh/node_neighbours.h"
 #include "mesh_spec.h"
 
 namespace getme::mesh_test {

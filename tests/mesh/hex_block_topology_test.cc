@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "mesh_spec.h"
 #include "topology_checks.h"
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "getme/mesh.h"
-#include "getme/mesh_quality.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace getme {
 namespace {

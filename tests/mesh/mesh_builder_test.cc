@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "mesh_spec.h"
 
 namespace getme::mesh_test {

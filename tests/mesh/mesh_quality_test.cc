@@ -1,7 +1,7 @@
 // EvaluateMeshQuality and the per-element quality functions against an independent Eigen
 // re-computation (reference_quality.h) on small mixed meshes with distorted and inverted elements.
 
-#include "getme/mesh_quality.h"
+#include "getme/mesh/mesh_quality.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "getme/mesh.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh.h"
+#include "getme/parallel/thread_pool.h"
 #include "mesh_spec.h"
 #include "reference_quality.h"
 

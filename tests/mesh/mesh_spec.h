@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "getme/element_type.h"
-#include "getme/mesh.h"
+#include "getme/elements/element_type.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::mesh_test {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "mesh_spec.h"
 #include "reference_quality.h"
 #include "reference_topology.h"

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "getme/element_type.h"
+#include "getme/elements/element_type.h"
 
 namespace getme::mesh_test {
 

@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "getme/mesh_quality.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace getme {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "mesh_spec.h"
 
 namespace getme::mesh_test {

@@ -12,8 +12,8 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
-#include "getme/mesh_quality.h"
-#include "getme/thread_pool.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
 #include "gmock/gmock.h"
 #include "grpcpp/create_channel.h"
 #include "grpcpp/security/credentials.h"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "getme/v1/smoother.grpc.pb.h"
 #include "getme_server/server.h"
 #include "getme_server/server_options.h"

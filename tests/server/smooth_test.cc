@@ -3,8 +3,8 @@
 #include <cstring>
 #include <vector>
 
-#include "getme/progress.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoother.h"
 #include "gtest/gtest.h"
 #include "server_test_support.h"
 

@@ -7,7 +7,7 @@
 #include <array>
 
 #include "getme/meshgen/hybrid_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

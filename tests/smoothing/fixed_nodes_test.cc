@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "getme/meshgen/distorted_hex_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

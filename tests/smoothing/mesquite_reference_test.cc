@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

@@ -10,7 +10,7 @@
 #include "getme/meshgen/distorted_hex_block.h"
 #include "getme/meshgen/hybrid_block.h"
 #include "getme/meshgen/jittered_tet_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

@@ -1,6 +1,6 @@
 // ResultCheck (core/getme/result_check.h) on hand-broken results: each broken promise is caught
 // and named, and an intact result passes.
-#include "getme/result_check.h"
+#include "getme/smoothing/result_check.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "getme/meshgen/distorted_hex_block.h"
-#include "getme/thread_pool.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace getme {
 namespace {

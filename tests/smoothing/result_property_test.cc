@@ -11,7 +11,7 @@
 #include <random>
 
 #include "getme/meshgen/hybrid_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "reference_quality.h"
 #include "smoothing_test_support.h"
 

@@ -4,7 +4,7 @@
 
 #include "formats/vtk_mesh.h"
 #include "formats/vtk_reader.h"
-#include "getme/element_quality.h"
+#include "getme/elements/element_quality.h"
 
 namespace getme::testing {
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "getme/mesh.h"
-#include "getme/smoother.h"
+#include "getme/mesh/mesh.h"
+#include "getme/smoothing/smoother.h"
 
 namespace getme::testing {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "getme/meshgen/thin_prism_vessel.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

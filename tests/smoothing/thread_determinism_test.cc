@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "getme/meshgen/hybrid_block.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

@@ -3,7 +3,7 @@
 #include <array>
 
 #include "absl/strings/str_cat.h"
-#include "getme/smoother.h"
+#include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
 namespace getme {

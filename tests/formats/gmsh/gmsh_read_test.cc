@@ -13,7 +13,7 @@
 #include "formats/gmsh/gmsh_groups.h"
 #include "formats/gmsh/gmsh_reader.h"
 #include "formats/vtk_mesh.h"
-#include "getme/element_quality.h"
+#include "getme/elements/element_quality.h"
 #include "gmsh_test_util.h"
 
 namespace getme::formats {

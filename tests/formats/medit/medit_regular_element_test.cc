@@ -10,7 +10,7 @@
 
 #include "formats/medit/medit_reader.h"
 #include "formats/vtk_mesh.h"
-#include "getme/element_quality.h"
+#include "getme/elements/element_quality.h"
 #include "medit_test_util.h"
 #include "vtk_test_util.h"
 

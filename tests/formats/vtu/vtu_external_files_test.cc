@@ -10,7 +10,7 @@
 #include "formats/vtk_writer.h"
 #include "formats/vtu/vtu_reader.h"
 #include "formats/vtu/vtu_writer.h"
-#include "getme/element_quality.h"
+#include "getme/elements/element_quality.h"
 #include "vtk_test_util.h"
 #include "vtu_expected.h"
 

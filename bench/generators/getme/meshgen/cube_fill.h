@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::meshgen {
 

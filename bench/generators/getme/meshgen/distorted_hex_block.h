@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "absl/status/statusor.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::meshgen {
 

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "getme/element_type.h"
-#include "getme/mesh.h"
-#include "getme/vec3.h"
+#include "getme/elements/element_type.h"
+#include "getme/mesh/mesh.h"
+#include "getme/elements/vec3.h"
 
 namespace getme::meshgen {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "absl/status/statusor.h"
-#include "getme/mesh.h"
+#include "getme/mesh/mesh.h"
 #include "getme/meshgen/thin_prism_vessel.h"
 
 namespace getme::meshgen {

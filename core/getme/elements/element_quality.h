@@ -1,0 +1,115 @@
+#pragma once
+
+// Per-element quality kernels: validity (Def. 2), mean ratio (Def. 3, eq. 10), quad-face and
+// element warpage and the combined criterion q_γ (Sec. 4.4). Templated on the element type.
+
+#include <algorithm>
+#include <cmath>
+
+#include "getme/elements/element_tables.h"
+#include "getme/elements/lanes.h"
+#include "getme/elements/vec3.h"
+
+namespace getme {
+
+// det D(T_k) of node tetrahedron k (eq. 9).
+template <ElementType kType>
+inline double NodeTetDeterminant(const ElementNodes<kType>& p, int k) {
+  const auto& t = ElementTable<kType>::kNodeTets[k];
+  const Vec3 a = p[t[1]] - p[t[0]];
+  const Vec3 b = p[t[2]] - p[t[0]];
+  const Vec3 c = p[t[3]] - p[t[0]];
+  return a.dot(b.cross(c));
+}
+
+// Def. 2: every node tetrahedron has a positive determinant.
+template <ElementType kType>
+inline bool IsValid(const ElementNodes<kType>& p) {
+  for (int k = 0; k < static_cast<int>(ElementTable<kType>::kNodeTets.size()); ++k) {
+    if (!(NodeTetDeterminant<kType>(p, k) > 0.0)) return false;
+  }
+  return true;
+}
+
+// Returned by MeanRatioOrInvalid for an element that is not valid (Def. 2).
+inline constexpr double kInvalidQuality = -1.0;
+
+// Mean ratio quality number (Def. 3, eq. 10) clamped to [0, 1], or kInvalidQuality when a node
+// tetrahedron has det ≤ 0: one pass gives both validity and quality. The clamp matters because
+// rounding can give a regular element 1 + 2e-16, which would make the simultaneous weight
+// (1 − q)^η NaN (NOTES.md §4). Generic over the lane type S (lanes.h).
+template <ElementType kType, typename S>
+inline S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
+  using Table = ElementTable<kType>;
+  constexpr auto& w = Table::kTargetInverse;
+  S sum = Splat<S>(0.0);
+  auto valid = AllLanes<S>();
+  for (const auto& t : Table::kNodeTets) {
+    const Point3<S> d0 = p[t[1]] - p[t[0]];
+    const Point3<S> d1 = p[t[2]] - p[t[0]];
+    const Point3<S> d2 = p[t[3]] - p[t[0]];
+    const S det_d = Dot(d0, Cross(d1, d2));
+    valid = Both(valid, det_d > 0.0);
+    // S = D W⁻¹ with W⁻¹ upper triangular: column j of S is Σ_i D_i · W⁻¹(i, j).
+    const Point3<S> s0 = d0 * w[0][0];
+    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
+    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
+    const S det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
+    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
+    sum += 3.0 * Cbrt(det_s * det_s) / frobenius2;
+  }
+  const S q = sum / static_cast<double>(Table::kNodeTets.size());
+  // std::clamp(q, 0, 1), lane by lane.
+  const S clamped = Select(q < 0.0, Splat<S>(0.0), Select(1.0 < q, Splat<S>(1.0), q));
+  return Select(valid, clamped, Splat<S>(kInvalidQuality));
+}
+
+template <ElementType kType>
+inline double MeanRatioOrInvalid(const ElementNodes<kType>& p) {
+  return MeanRatioOrInvalid<kType, double>(ToLaneNodes<kType>(p));
+}
+
+// Mean ratio (Def. 3), with an invalid element counted as q = 0 (NOTES.md §4).
+template <ElementType kType>
+inline double MeanRatio(const ElementNodes<kType>& p) {
+  return std::max(0.0, MeanRatioOrInvalid<kType>(p));
+}
+
+// Warpage of the quad face (a, b, c, d) (Sec. 4.4): 1 − min((n̂0·n̂2)³, (n̂1·n̂3)³) ∈ [0, 2], with
+// n_k = (p_k − p_{k−1}) × (p_{k+1} − p_k). A degenerate corner (zero normal) counts as fully
+// warped.
+inline double QuadWarpage(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 q[4] = {a, b, c, d};
+  Vec3 n[4];
+  for (int k = 0; k < 4; ++k) {
+    const Vec3& prev = q[(k + 3) % 4];
+    const Vec3& next = q[(k + 1) % 4];
+    n[k] = (q[k] - prev).cross(next - q[k]);
+    const double length = n[k].norm();
+    if (!(length > 0.0)) return 2.0;
+    n[k] /= length;
+  }
+  const double c02 = n[0].dot(n[2]);
+  const double c13 = n[1].dot(n[3]);
+  return 1.0 - std::min(c02 * c02 * c02, c13 * c13 * c13);
+}
+
+// Element warpage: the maximum over its quad faces; 0 for a tetrahedron.
+template <ElementType kType>
+inline double Warpage(const ElementNodes<kType>& p) {
+  double warpage = 0.0;
+  for (const auto& face : ElementTable<kType>::kFaces) {
+    if (face.size != 4) continue;
+    const auto& f = face.nodes;
+    warpage = std::max(warpage, QuadWarpage(p[f[0]], p[f[1]], p[f[2]], p[f[3]]));
+  }
+  return warpage;
+}
+
+// Combined criterion of Sec. 4.4: q_γ(E) = min(q(E), γ·(1 − w(E)/2)).
+template <ElementType kType>
+inline double QualityGamma(const ElementNodes<kType>& p, double gamma) {
+  return std::min(MeanRatio<kType>(p), gamma * (1.0 - Warpage<kType>(p) / 2.0));
+}
+
+}  // namespace getme

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "getme/mesh/mesh.h"
+
+namespace getme {
+
+// The elements sharing at least one node with an element, without the element itself, in
+// canonical order (Mesh::canonical_order), collected from the node→element rows when asked.
+// The smoothers use this instead of a stored table: a tetrahedron of a tetrahedral mesh has
+// about 80 such neighbours, so a table costs over 300 bytes per element, more than the rest of
+// the mesh and the smoother state together; collecting them costs a few percent of a sequential
+// pick, which then evaluates every one of them.
+class ElementNeighbourFinder {
+ public:
+  // Valid until the next call.
+  std::span<const ElementId> Find(const Mesh& mesh, ElementId element);
+
+ private:
+  std::vector<std::int32_t> ranks_;  // canonical ranks, one sorted row per node of the element
+  std::vector<std::size_t> row_ends_;
+  std::vector<std::int32_t> merged_;
+  std::vector<ElementId> neighbours_;
+};
+
+}  // namespace getme

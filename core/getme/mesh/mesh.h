@@ -1,0 +1,137 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "getme/elements/element_type.h"
+
+namespace getme {
+
+using NodeId = std::int32_t;
+using ElementId = std::int32_t;
+
+// Elements of one type, stored contiguously so hot loops run one templated kernel per type.
+struct ElementBlock {
+  std::vector<NodeId> nodes;        // NodeCount(type) ids per element, paper node order (Fig. 1)
+  std::vector<ElementId> elements;  // global element id of each block entry
+};
+
+// Compressed sparse rows: the items of row r are items[offsets[r] .. offsets[r+1]).
+struct CompressedRows {
+  std::vector<std::int64_t> offsets;
+  std::vector<std::int32_t> items;
+
+  std::span<const std::int32_t> Row(std::int64_t row) const {
+    return {items.data() + offsets[row], items.data() + offsets[row + 1]};
+  }
+  std::int64_t RowCount() const { return static_cast<std::int64_t>(offsets.size()) - 1; }
+};
+
+// A mixed volume mesh: structure-of-arrays coordinates, connectivity per element type in the
+// paper's node order, free/fixed flags, and the topology the smoothers need (node→element
+// adjacency, boundary nodes, element neighbours). Global element ids follow insertion order, so
+// they match the element numbering of the file or message the mesh came from.
+// Topology is immutable after Build(); only coordinates change during smoothing.
+class Mesh {
+ public:
+  std::int64_t node_count() const { return static_cast<std::int64_t>(x_.size()); }
+  std::int64_t element_count() const { return static_cast<std::int64_t>(element_type_.size()); }
+  std::int64_t element_count(ElementType type) const {
+    return static_cast<std::int64_t>(blocks_[TypeIndex(type)].elements.size());
+  }
+
+  std::span<double> x() { return x_; }
+  std::span<double> y() { return y_; }
+  std::span<double> z() { return z_; }
+  std::span<const double> x() const { return x_; }
+  std::span<const double> y() const { return y_; }
+  std::span<const double> z() const { return z_; }
+
+  ElementType type(ElementId element) const { return element_type_[element]; }
+  // Position of the element inside its type block.
+  std::int32_t block_index(ElementId element) const { return block_index_[element]; }
+  const ElementBlock& block(ElementType type) const { return blocks_[TypeIndex(type)]; }
+  std::span<const NodeId> element_nodes(ElementId element) const;
+
+  // Caller-fixed nodes (e.g. a file's `fixed` point data). Boundary nodes are separate; which
+  // nodes a smoother moves is decided by its parameters (fix_boundary).
+  bool is_fixed(NodeId node) const { return fixed_[node] != 0; }
+  std::span<const std::uint8_t> fixed_flags() const { return fixed_; }
+  void set_fixed(NodeId node, bool fixed) { fixed_[node] = fixed ? 1 : 0; }
+  // Nodes of faces that belong to exactly one element.
+  bool is_boundary(NodeId node) const { return boundary_[node] != 0; }
+  std::span<const std::uint8_t> boundary_flags() const { return boundary_; }
+  std::int64_t boundary_face_count() const { return boundary_face_count_; }
+
+  // The canonical element order: all tetrahedra, then hexahedra, pyramids and prisms, each in
+  // insertion order. Every order-dependent step of the engine (sums, tie-breaks, visiting order)
+  // follows it rather than the ids, so a mesh gives bit-identical results however its elements of
+  // different types are interleaved (a file's order or the service's type-grouped wire order).
+  std::span<const ElementId> canonical_order() const { return canonical_order_; }
+  // Position of the element in canonical_order().
+  std::int32_t canonical_rank(ElementId element) const {
+    return static_cast<std::int32_t>(block_rank_offset_[TypeIndex(element_type_[element])]) +
+           block_index_[element];
+  }
+  // Elements containing the node, in canonical order.
+  std::span<const ElementId> node_elements(NodeId node) const { return node_elements_.Row(node); }
+  // Elements sharing at least one node with the element (excluding itself), canonical order.
+  // The table is built on the first call, not by Build(): on a tetrahedral mesh it holds about
+  // 80 entries per element, more memory than everything else, so the engine collects neighbours
+  // per element instead (ElementNeighbourFinder). Thread-safe; copies of a mesh share the table.
+  std::span<const ElementId> element_neighbours(ElementId element) const;
+  // Node→corner adjacency: corner c of block t is t's corner_offset + block_index·NodeCount + k.
+  // Used by the simultaneous substep to gather transformed nodes in a fixed order.
+  const CompressedRows& node_corners() const { return node_corners_; }
+  std::int64_t corner_offset(ElementType type) const { return corner_offset_[TypeIndex(type)]; }
+  std::int64_t corner_count() const { return corner_offset_[kElementTypeCount]; }
+
+ private:
+  friend class MeshBuilder;
+  std::vector<double> x_, y_, z_;
+  std::vector<std::uint8_t> fixed_, boundary_;
+  std::vector<ElementType> element_type_;
+  std::vector<std::int32_t> block_index_;
+  std::array<ElementBlock, kElementTypeCount> blocks_;
+  std::array<std::int64_t, kElementTypeCount + 1> corner_offset_{};
+  std::array<std::int64_t, kElementTypeCount> block_rank_offset_{};
+  std::vector<ElementId> canonical_order_;
+  CompressedRows node_elements_;
+  struct LazyRows {
+    std::once_flag built;
+    CompressedRows rows;
+  };
+  std::shared_ptr<LazyRows> element_neighbours_ = std::make_shared<LazyRows>();
+  CompressedRows node_corners_;
+  std::int64_t boundary_face_count_ = 0;
+};
+
+// Collects nodes and elements, then validates them and builds the topology. Errors name the
+// element or node at fault by its insertion index.
+class MeshBuilder {
+ public:
+  void Reserve(std::int64_t nodes, std::int64_t elements);
+  NodeId AddNode(double x, double y, double z);
+  void SetFixed(NodeId node, bool fixed = true);
+  // nodes: NodeCount(type) node ids in the paper's order (NOTES.md §1).
+  void AddElement(ElementType type, std::span<const std::int64_t> nodes);
+
+  // Fails with InvalidArgument on an empty mesh, a node id out of range or repeated within an
+  // element, a non-finite or out-of-range coordinate, more than 2^31-1 nodes or elements, an
+  // element listed twice, or a face shared by more than two elements (mesh_conformity.h).
+  absl::StatusOr<Mesh> Build() &&;
+
+ private:
+  Mesh mesh_;
+  std::vector<std::pair<std::int64_t, bool>> pending_fixed_;
+  std::vector<std::int64_t> raw_nodes_;  // flat, with per-element offsets below
+  std::vector<std::int64_t> raw_offsets_{0};
+};
+
+}  // namespace getme

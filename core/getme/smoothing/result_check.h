@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "absl/status/status.h"
+#include "getme/mesh/mesh.h"
+#include "getme/mesh/mesh_quality.h"
+
+namespace getme {
+
+// The promise every successful Smooth() keeps, checked on the mesh it hands back rather than
+// trusted (docs/reliability.md): every coordinate is finite, the nodes that had to stay put are
+// bit-identical to the input, no element is invalid, and the reported quality is finite and is
+// that of the returned coordinates. Connectivity needs no check: the smoothers cannot change it
+// (Mesh exposes coordinates only as mutable state).
+class ResultCheck {
+ public:
+  // Records the immovable nodes' input coordinates (movable[i] == 0); call before smoothing.
+  ResultCheck(const Mesh& mesh, std::span<const std::uint8_t> movable);
+
+  // OK, or the first broken promise with the node or elements it concerns. `after` must be
+  // EvaluateMeshQuality of `mesh` as it is now.
+  absl::Status Check(const Mesh& mesh, const MeshQuality& after) const;
+
+ private:
+  std::vector<NodeId> immovable_;
+  std::vector<double> x_, y_, z_;  // of immovable_, in the same order
+};
+
+}  // namespace getme

@@ -1,0 +1,115 @@
+#include "getme/smoothing/smoother.h"
+
+#include <algorithm>
+
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
+#include "getme/smoothing/laplace_smoother.h"
+#include "getme/smoothing/result_check.h"
+#include "getme/smoothing/sequential_smoother.h"
+#include "getme/smoothing/simultaneous_smoother.h"
+#include "getme/smoothing/smoothing_context.h"
+#include "getme/smoothing/untangle.h"
+
+namespace getme {
+namespace {
+
+// "3 <adjective>elements, first: 4, 9, 12" for an error message.
+std::string CountedElements(const MeshQuality& quality, absl::string_view adjective) {
+  std::vector<std::string> listed;
+  for (ElementId e : quality.first_invalid) listed.push_back(absl::StrCat(e));
+  return absl::StrCat(quality.invalid, " ", adjective, "element", quality.invalid == 1 ? "" : "s",
+                      ", first: ", absl::StrJoin(listed, ", "));
+}
+
+absl::Status InvalidInput(const MeshQuality& quality) {
+  return absl::FailedPreconditionError(
+      absl::StrCat("the mesh has ", CountedElements(quality, "invalid (inverted or degenerate) "),
+                   "; enable untangling or repair the mesh"));
+}
+
+// Plain Laplace is quality-unaware (a baseline): inverting elements is what it does, not an
+// engine fault, but its result is still a broken mesh and is not handed out as one.
+absl::Status PlainLaplaceInverted(const MeshQuality& after) {
+  return absl::FailedPreconditionError(
+      absl::StrCat("plain Laplace smoothing inverted ", CountedElements(after, ""),
+                   "; it does not check validity: use smart-laplace or getme"));
+}
+
+absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
+  auto record = [&](absl::StatusOr<PhaseSummary> phase) -> absl::Status {
+    if (!phase.ok()) return phase.status();
+    result.phases.push_back(*phase);
+    switch (phase->phase) {
+      case Phase::kUntangle:
+        result.iterations_untangle += phase->iterations;
+        break;
+      case Phase::kSimultaneous:
+        result.iterations_simultaneous += phase->iterations;
+        break;
+      case Phase::kSequential:
+      case Phase::kWarpage:
+        result.iterations_sequential += phase->iterations;
+        break;
+      case Phase::kSmartLaplace:
+      case Phase::kLaplace:
+        result.iterations_laplace += phase->iterations;
+        break;
+    }
+    return absl::OkStatus();
+  };
+
+  const Method method = context.params.method;
+  // Plain Laplace is quality-unaware and may itself invert elements: it runs on any input.
+  if (method == Method::kLaplace) return record(RunLaplace(context));
+
+  if (result.before.invalid > 0) {
+    if (!context.params.untangle) return InvalidInput(result.before);
+    if (auto s = record(RunUntangle(context)); !s.ok()) return s;
+  }
+  switch (method) {
+    case Method::kSimultaneous:
+      return record(RunSimultaneous(context));
+    case Method::kSequential:
+      return record(RunSequential(context, SelectionCriterion::kMeanRatio));
+    case Method::kSmartLaplace:
+      return record(RunSmartLaplace(context));
+    case Method::kGetme:
+    case Method::kWarpage:
+      if (auto s = record(RunSimultaneous(context)); !s.ok()) return s;
+      if (auto s = record(RunSequential(context, SelectionCriterion::kMeanRatio)); !s.ok()) {
+        return s;
+      }
+      if (method == Method::kWarpage) {
+        return record(RunSequential(context, SelectionCriterion::kQualityGamma));
+      }
+      return absl::OkStatus();
+    case Method::kLaplace:
+      break;
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params,
+                                       const ProgressCallback& progress,
+                                       const CancellationToken* cancel) {
+  if (auto status = params.Validate(); !status.ok()) return status;
+  ThreadPool pool(params.threads);
+  SmoothingResult result;
+  result.threads = pool.thread_count();
+  result.before = EvaluateMeshQuality(mesh, pool);
+  SmoothingContext context(mesh, params, pool, progress, cancel);
+  const ResultCheck check(mesh, context.movable);
+  if (auto status = RunPhases(context, result); !status.ok()) return status;
+  result.after = EvaluateMeshQuality(mesh, pool);
+  result.seconds = context.ElapsedSeconds();
+  if (params.method == Method::kLaplace && result.after.invalid > 0) {
+    return PlainLaplaceInverted(result.after);
+  }
+  if (auto status = check.Check(mesh, result.after); !status.ok()) return status;
+  return result;
+}
+
+}  // namespace getme

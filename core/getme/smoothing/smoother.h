@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "getme/mesh/mesh.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoothing_params.h"
+
+namespace getme {
+
+struct PhaseSummary {
+  Phase phase = Phase::kSimultaneous;
+  std::int64_t iterations = 0;
+  double seconds = 0.0;
+  double q_min = 0.0;  // after the phase (the state it handed on)
+  double q_mean = 0.0;
+  std::int64_t reverted_nodes = 0;
+};
+
+struct SmoothingResult {
+  MeshQuality before;
+  MeshQuality after;
+  std::vector<PhaseSummary> phases;  // in the order they ran
+  std::int64_t iterations_untangle = 0;
+  std::int64_t iterations_simultaneous = 0;
+  std::int64_t iterations_sequential = 0;  // includes the q_γ sequential substep
+  std::int64_t iterations_laplace = 0;
+  double seconds = 0.0;
+  int threads = 1;
+};
+
+// Smooths the free nodes of `mesh` in place with params.method. Invalid input is untangled first
+// (params.untangle) or refused with FailedPrecondition naming the first invalid elements.
+// Returns Cancelled if `cancel` fires; the mesh is then left valid (the best state so far).
+// Success means the result passed ResultCheck (result_check.h): valid, fixed nodes bit-identical,
+// finite, `after` its quality; a result failing it is returned as Internal, never as success.
+// Plain Laplace (Method::kLaplace) may invert elements: that is FailedPrecondition, naming them.
+// After any error but Cancelled the mesh holds no result and must not be used.
+absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params,
+                                       const ProgressCallback& progress = {},
+                                       const CancellationToken* cancel = nullptr);
+
+}  // namespace getme

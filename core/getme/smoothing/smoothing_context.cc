@@ -1,0 +1,63 @@
+#include "getme/smoothing/smoothing_context.h"
+
+#include <algorithm>
+
+#include "getme/elements/vec3.h"
+#include "getme/parallel/block_loops.h"
+
+namespace getme {
+SmoothingContext::SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in,
+                                   ThreadPool& pool_in, const ProgressCallback& progress_in,
+                                   const CancellationToken* cancel_in)
+    : mesh(mesh_in),
+      params(params_in),
+      pool(pool_in),
+      progress(progress_in),
+      cancel(cancel_in),
+      start(std::chrono::steady_clock::now()) {
+  movable.resize(mesh.node_count());
+  for (std::int64_t i = 0; i < mesh.node_count(); ++i) {
+    const auto node = static_cast<NodeId>(i);
+    movable[i] = !mesh.is_fixed(node) && !(params.fix_boundary && mesh.is_boundary(node)) ? 1 : 0;
+  }
+  RefreshQuality();
+}
+
+double SmoothingContext::ElapsedSeconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SmoothingContext::RefreshQuality() {
+  quality.resize(mesh.element_count());
+  const Mesh& m = mesh;
+  // kLanes elements at a time (lanes.h): the same bits as one at a time.
+  ParallelForEachBlock(
+      m, pool,
+      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
+        constexpr int kNodes = ElementTable<kType>::kNodes;
+        for (std::int64_t i = begin; i < end; i += kLanes) {
+          const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
+          const Lanes q = MeanRatioOrInvalid<kType, Lanes>(
+              GatherLanes<kType>(m.x(), m.y(), m.z(), block.nodes.data() + i * kNodes, count));
+          for (int l = 0; l < count; ++l) quality[block.elements[i + l]] = q[l];
+        }
+      });
+}
+
+void SmoothingContext::FinishPhase(PhaseSummary& summary, const Summary& state,
+                                   double phase_start) const {
+  summary.q_min = state.q_min;
+  summary.q_mean = state.q_mean;
+  summary.seconds = ElapsedSeconds() - phase_start;
+  Report({summary.phase, summary.iterations, state.q_min, state.q_mean, state.invalid, 0,
+          ElapsedSeconds(), true});
+}
+
+double ElementQualityOrInvalid(const Mesh& mesh, ElementId element) {
+  const NodeId* ids = mesh.element_nodes(element).data();
+  return DispatchElementType(mesh.type(element), [&]<ElementType kType>() {
+    return MeanRatioOrInvalid<kType>(GatherNodes<kType>(mesh, ids));
+  });
+}
+
+}  // namespace getme

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "getme/elements/element_quality.h"
+#include "getme/mesh/mesh.h"
+#include "getme/mesh/mesh_quality.h"
+#include "getme/parallel/thread_pool.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoother.h"
+#include "getme/smoothing/smoothing_params.h"
+
+namespace getme {
+
+// What every phase of one Smooth() call shares: the mesh, which nodes may move, the current
+// per-element quality (kept up to date by each phase so the next one need not recompute it),
+// progress reporting and cancellation.
+struct SmoothingContext {
+  SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in, ThreadPool& pool_in,
+                   const ProgressCallback& progress_in, const CancellationToken* cancel_in);
+
+  Mesh& mesh;
+  const SmoothingParams& params;
+  ThreadPool& pool;
+  const ProgressCallback& progress;
+  const CancellationToken* cancel;
+  std::chrono::steady_clock::time_point start;
+  // 1 for nodes the smoothers may move: not caller-fixed, and not boundary if fix_boundary.
+  std::vector<std::uint8_t> movable;
+  // Per element: mean ratio in [0, 1], or kInvalidQuality for an invalid element.
+  std::vector<double> quality;
+
+  double ElapsedSeconds() const;
+  bool Cancelled() const { return cancel != nullptr && cancel->cancelled(); }
+  void Report(const ProgressEvent& event) const {
+    if (progress) progress(event);
+  }
+  // Recomputes `quality` for the whole mesh.
+  void RefreshQuality();
+  // q_min and q_mean of `quality` with invalid elements as 0, and the invalid count.
+  using Summary = QualitySummary;
+  Summary Summarize() const { return SummarizeQualities(quality, mesh.canonical_order(), pool); }
+  // Completes a phase: records the state it hands on and its duration in `summary`, and reports
+  // the phase's final event.
+  void FinishPhase(PhaseSummary& summary, const Summary& state, double phase_start) const;
+};
+
+// Mean ratio or kInvalidQuality of one element, dispatched on its type.
+double ElementQualityOrInvalid(const Mesh& mesh, ElementId element);
+
+}  // namespace getme

@@ -1,0 +1,126 @@
+#include "getme/smoothing/smoothing_params.h"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
+
+namespace getme {
+namespace {
+
+constexpr std::array<std::pair<const char*, Method>, 6> kMethodNames = {{
+    {"getme", Method::kGetme},
+    {"simultaneous", Method::kSimultaneous},
+    {"sequential", Method::kSequential},
+    {"warpage", Method::kWarpage},
+    {"smart-laplace", Method::kSmartLaplace},
+    {"laplace", Method::kLaplace},
+}};
+
+absl::Status OutOfRange(absl::string_view field, double value, absl::string_view allowed) {
+  return absl::InvalidArgumentError(
+      absl::StrCat("parameter ", field, " = ", value, " is out of range: must be ", allowed));
+}
+
+bool Finite(double v) { return std::isfinite(v); }
+
+absl::Status CheckPositive(absl::string_view field, double value) {
+  if (!Finite(value) || !(value > 0.0)) return OutOfRange(field, value, "> 0");
+  return absl::OkStatus();
+}
+
+absl::Status CheckUnitInterval(absl::string_view field, double value, bool allow_zero) {
+  const bool ok = Finite(value) && value <= 1.0 && (allow_zero ? value >= 0.0 : value > 0.0);
+  if (!ok) return OutOfRange(field, value, allow_zero ? "in [0, 1]" : "in (0, 1]");
+  return absl::OkStatus();
+}
+
+absl::Status CheckNonNegative(absl::string_view field, double value) {
+  if (!Finite(value) || value < 0.0) return OutOfRange(field, value, ">= 0");
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+const char* MethodName(Method method) {
+  for (const auto& [name, value] : kMethodNames) {
+    if (value == method) return name;
+  }
+  return "unknown";
+}
+
+absl::StatusOr<Method> ParseMethod(std::string_view name) {
+  for (const auto& [method_name, value] : kMethodNames) {
+    if (method_name == name) return value;
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : kMethodNames) names.push_back(entry.first);
+  return absl::InvalidArgumentError(absl::StrCat(
+      "unknown method '", std::string(name), "': expected one of ", absl::StrJoin(names, ", ")));
+}
+
+absl::Status SmoothingParams::Validate() const {
+  for (ElementType type : kAllElementTypes) {
+    const int t = TypeIndex(type);
+    const std::string suffix = absl::StrCat("[", TypeName(type), "]");
+    if (auto s = CheckPositive("simultaneous_sigma_min" + suffix, simultaneous_sigma_min[t]);
+        !s.ok()) {
+      return s;
+    }
+    if (auto s = CheckPositive("simultaneous_sigma_max" + suffix, simultaneous_sigma_max[t]);
+        !s.ok()) {
+      return s;
+    }
+    if (simultaneous_sigma_max[t] < simultaneous_sigma_min[t]) {
+      return OutOfRange(
+          "simultaneous_sigma_max" + suffix, simultaneous_sigma_max[t],
+          absl::StrCat(">= simultaneous_sigma_min", suffix, " = ", simultaneous_sigma_min[t]));
+    }
+    if (auto s = CheckPositive("sequential_sigma" + suffix, sequential_sigma[t]); !s.ok()) return s;
+  }
+  struct UnitField {
+    absl::string_view name;
+    double value;
+    bool allow_zero;
+  };
+  for (const UnitField& field :
+       {UnitField{"simultaneous_rho", simultaneous_rho, false},
+        UnitField{"sequential_rho", sequential_rho, false}, UnitField{"gamma", gamma, false}}) {
+    if (auto s = CheckUnitInterval(field.name, field.value, field.allow_zero); !s.ok()) return s;
+  }
+  for (const auto& [name, value] :
+       {std::pair<absl::string_view, double>{"simultaneous_eta", simultaneous_eta},
+        {"simultaneous_tolerance", simultaneous_tolerance},
+        {"penalty_invalid", penalty_invalid},
+        {"penalty_repeat", penalty_repeat},
+        {"penalty_success", penalty_success},
+        {"laplace_tolerance", laplace_tolerance},
+        {"sequential_improvement_tolerance", sequential_improvement_tolerance}}) {
+    if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
+  }
+  if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
+  for (const auto& [name, value] : {std::pair<absl::string_view, std::int64_t>{
+                                        "simultaneous_max_iterations", simultaneous_max_iterations},
+                                    {"sequential_max_iterations", sequential_max_iterations},
+                                    {"sequential_stall_iterations", sequential_stall_iterations},
+                                    {"laplace_max_iterations", laplace_max_iterations},
+                                    {"untangle_max_iterations", untangle_max_iterations}}) {
+    if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
+  }
+  if (sequential_cycle < 1) {
+    return OutOfRange("sequential_cycle", static_cast<double>(sequential_cycle), ">= 1");
+  }
+  if (simultaneous_backtracking_steps < 0 || simultaneous_backtracking_steps > 30) {
+    return OutOfRange("simultaneous_backtracking_steps", simultaneous_backtracking_steps,
+                      "in [0, 30]");
+  }
+  if (sequential_backtracking_steps < 0 || sequential_backtracking_steps > 30) {
+    return OutOfRange("sequential_backtracking_steps", sequential_backtracking_steps, "in [0, 30]");
+  }
+  if (threads < 0 || threads > 1024) return OutOfRange("threads", threads, "in [0, 1024]");
+  return absl::OkStatus();
+}
+
+}  // namespace getme

@@ -1,0 +1,99 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "absl/status/status.h"
+#include "absl/status/statusor.h"
+#include "getme/elements/element_type.h"
+
+namespace getme {
+
+enum class Method {
+  kGetme,         // simultaneous, then sequential (Sec. 3.3) — the default
+  kSimultaneous,  // Sec. 3.1 only
+  kSequential,    // Sec. 3.2 only
+  kWarpage,       // GETMe, then the sequential substep selecting by q_γ (Sec. 4.4)
+  kSmartLaplace,  // baseline of Sec. 4 (NOTES.md §5)
+  kLaplace,       // plain Laplace: may invert elements, reported as invalid
+};
+
+const char* MethodName(Method method);
+absl::StatusOr<Method> ParseMethod(std::string_view name);
+
+// Per-element-type values, indexed by TypeIndex(type): tet, hex, pyramid, prism.
+using PerType = std::array<double, kElementTypeCount>;
+
+// Every engine parameter, with the paper's Section 4 defaults. Validate() names the first field
+// that is out of range.
+struct SmoothingParams {
+  Method method = Method::kGetme;
+
+  // --- Simultaneous substep (Sec. 3.1; defaults Sec. 4) ---
+  // σ_j = σ_min + (σ_max − σ_min)(1 − q(E_j)), Step 1.1.
+  PerType simultaneous_sigma_min = {0.77, 2.57, 1.86, 1.59};
+  PerType simultaneous_sigma_max = {0.84, 3.45, 1.86, 1.59};
+  double simultaneous_rho = 2.0 / 3.0;  // relaxation ρ, eq. (11), Step 1.2
+  double simultaneous_eta = 0.25;       // weight exponent η of w_j = (1 − q)^η, Step 2.1
+  // Stop when q_mean of two consecutive iterations differs by less than this (Sec. 4).
+  double simultaneous_tolerance = 1e-6;
+  std::int64_t simultaneous_max_iterations = 1000;
+  // Safeguard (docs/thin-layers.md): before reverting a node of an invalid element to its old
+  // position (Step 3.2), try moving it back only part of the way, halving its step up to this
+  // many times. 0 gives the paper's literal Step 3.
+  int simultaneous_backtracking_steps = 4;
+
+  // --- Sequential substep (Sec. 3.2; defaults Sec. 4) ---
+  PerType sequential_sigma = {0.81, 2.74, 1.82, 0.85};
+  double sequential_rho = 0.01;
+  double penalty_invalid = 0.01;   // Δπ_i: the transformation produced an invalid element
+  double penalty_repeat = 0.0005;  // Δπ_r: the same element was picked in the previous step
+  double penalty_success = 0.01;   // Δπ_s: subtracted after a successful transformation
+  // The paper leaves the stop rule open (NOTES.md §5). Here: stop when the best q_min of the
+  // phase rose by less than sequential_improvement_tolerance over the last
+  // sequential_stall_iterations picks (0: max(1000, elements)), or at sequential_max_iterations
+  // picks (0: 50 × elements). The best-q_min state seen is handed on: q_min oscillates as
+  // neighbours take turns being the worst element. Measured trade-offs in docs/quality.md.
+  std::int64_t sequential_stall_iterations = 0;
+  std::int64_t sequential_max_iterations = 0;
+  double sequential_improvement_tolerance = 1e-3;
+  // Safeguard (docs/quality.md): a step that would make a neighbour invalid is retried at half
+  // its length up to this many times before it counts as reverted (Step 3.1). 0 = the paper.
+  int sequential_backtracking_steps = 10;
+  // Safeguard (docs/quality.md): when a step is reverted because it would invert a neighbour, that
+  // neighbour is transformed next. The mean ratio averages node tetrahedra, so an element with one
+  // nearly flat node tetrahedron can block its neighbours while never being the worst.
+  bool sequential_transform_blockers = true;
+  // Picks between two progress events / cancellation checks / q_mean evaluations (Sec. 3.2,
+  // last paragraph: q_mean is evaluated only every prescribed number of iterations).
+  std::int64_t sequential_cycle = 1000;
+
+  // --- Warpage variant (Sec. 4.4) ---
+  double gamma = 0.25;  // γ of q_γ = min(q, γ(1 − w/2))
+
+  // --- Laplace baselines (NOTES.md §5) ---
+  double laplace_tolerance = 1e-6;
+  std::int64_t laplace_max_iterations = 1000;
+
+  // --- Untangling (goes beyond the paper, which requires a valid input; docs/untangling.md) ---
+  bool untangle = true;
+  std::int64_t untangle_max_iterations = 200;
+
+  // --- Nodes and threads ---
+  bool fix_boundary = true;  // Sec. 3: boundary nodes stay fixed
+  int threads = 0;           // 0 = hardware concurrency; results do not depend on it
+
+  absl::Status Validate() const;
+
+  // Switches off every safeguard that goes beyond the paper (simultaneous and sequential
+  // backtracking, transforming blocking neighbours), for comparison with the literal algorithm
+  // of Sections 3.1–3.2. Untangling and the stop rules are unaffected.
+  void UseLiteralPaperAlgorithm() {
+    simultaneous_backtracking_steps = 0;
+    sequential_backtracking_steps = 0;
+    sequential_transform_blockers = false;
+  }
+};
+
+}  // namespace getme
