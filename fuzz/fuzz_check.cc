@@ -20,8 +20,8 @@ bool IsVolumeCell(std::uint8_t type) {
   return type == 10 || type == 12 || type == 13 || type == 14;
 }
 
-void CheckSamePoints(const formats::VtkFile& expected, const formats::VtkFile& actual,
-                     absl::string_view what) {
+void CheckSamePoints(const formats::UnstructuredGrid& expected,
+                     const formats::UnstructuredGrid& actual, absl::string_view what) {
   Check(expected.point_count() == actual.point_count(),
         absl::StrCat(what, ": ", expected.point_count(), " points became ", actual.point_count()));
   const std::int64_t values = 3 * expected.point_count();
@@ -55,8 +55,8 @@ bool Accepted(const absl::Status& status, absl::string_view step) {
 
 void QuietLogging() { spdlog::set_level(spdlog::level::off); }
 
-void CheckSameGeometry(const formats::VtkFile& expected, const formats::VtkFile& actual,
-                       absl::string_view what) {
+void CheckSameGeometry(const formats::UnstructuredGrid& expected,
+                       const formats::UnstructuredGrid& actual, absl::string_view what) {
   CheckSamePoints(expected, actual, what);
   Check(expected.cells.types == actual.cells.types, absl::StrCat(what, ": cell types changed"));
   Check(expected.cells.offsets == actual.cells.offsets,
@@ -65,7 +65,7 @@ void CheckSameGeometry(const formats::VtkFile& expected, const formats::VtkFile&
         absl::StrCat(what, ": cell connectivity changed"));
 }
 
-std::vector<std::string> VolumeCellSignature(const formats::VtkCells& cells) {
+std::vector<std::string> VolumeCellSignature(const formats::GridCells& cells) {
   std::vector<std::string> signature;
   for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
     if (!IsVolumeCell(cells.types[cell])) continue;
@@ -78,8 +78,8 @@ std::vector<std::string> VolumeCellSignature(const formats::VtkCells& cells) {
   return signature;
 }
 
-void CheckSameVolumeMesh(const formats::VtkFile& expected, const formats::VtkFile& actual,
-                         absl::string_view what) {
+void CheckSameVolumeMesh(const formats::UnstructuredGrid& expected,
+                         const formats::UnstructuredGrid& actual, absl::string_view what) {
   CheckSamePoints(expected, actual, what);
   Check(VolumeCellSignature(expected.cells) == VolumeCellSignature(actual.cells),
         absl::StrCat(what, ": volume cells changed"));

@@ -9,7 +9,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/string_view.h"
 #include "formats/mesh_document.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::fuzz {
 
@@ -50,16 +50,16 @@ void QuietLogging();
 
 // Bit-identical points (NaN equals NaN: "nan" reads back as the canonical NaN) and identical
 // cells. `what` names the round trip in the failure message.
-void CheckSameGeometry(const formats::VtkFile& expected, const formats::VtkFile& actual,
-                       absl::string_view what);
+void CheckSameGeometry(const formats::UnstructuredGrid& expected,
+                       const formats::UnstructuredGrid& actual, absl::string_view what);
 
 // The volume cells (tetra, hexahedron, wedge, pyramid) with their nodes, sorted: what every
 // format keeps, whatever it does with lower-dimensional cells (MEDIT also regroups cells by kind).
-std::vector<std::string> VolumeCellSignature(const formats::VtkCells& cells);
+std::vector<std::string> VolumeCellSignature(const formats::GridCells& cells);
 
 // Points bit-identical and the same volume cells: what a conversion to another format keeps.
-void CheckSameVolumeMesh(const formats::VtkFile& expected, const formats::VtkFile& actual,
-                         absl::string_view what);
+void CheckSameVolumeMesh(const formats::UnstructuredGrid& expected,
+                         const formats::UnstructuredGrid& actual, absl::string_view what);
 
 const char* FormatName(formats::FileFormat format);
 

@@ -13,7 +13,7 @@ namespace {
 
 std::string Describe(const formats::WriteOptions& options) {
   return absl::StrCat(options.gmsh_version == formats::GmshVersion::k22 ? "2.2" : "4.1",
-                      options.encoding == formats::VtkEncoding::kAscii ? " ASCII" : " binary");
+                      options.encoding == formats::Encoding::kAscii ? " ASCII" : " binary");
 }
 
 // In the version and encoding read, the write must succeed; in another one it may refuse what
@@ -44,8 +44,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!fuzz::Accepted(document.status(), "ParseGmsh")) return 0;
   for (const formats::GmshVersion version :
        {formats::GmshVersion::k22, formats::GmshVersion::k41}) {
-    for (const formats::VtkEncoding encoding :
-         {formats::VtkEncoding::kAscii, formats::VtkEncoding::kBinary}) {
+    for (const formats::Encoding encoding :
+         {formats::Encoding::kAscii, formats::Encoding::kBinary}) {
       formats::WriteOptions options = document->as_read;
       options.gmsh_version = version;
       options.encoding = encoding;

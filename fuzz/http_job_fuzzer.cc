@@ -11,8 +11,8 @@
 #include "getme_server/http_json.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/job_submission.h"
-#include "getme_server/mesh_conversion.h"
 #include "getme_server/server_options.h"
+#include "getme_wire/mesh_fields.h"
 #include "google/protobuf/struct.pb.h"
 #include "google/protobuf/util/json_util.h"
 #include "google/protobuf/util/message_differencer.h"
@@ -65,7 +65,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::CheckOk(server::FromJson(body, request), "FromJson of an accepted body");
   const v1::Job described = (*job)->Describe();
   fuzz::Check(
-      static_cast<std::int64_t>(described.elements()) == server::WireElementCount(request.mesh()) &&
+      static_cast<std::int64_t>(described.elements()) == wire::WireElementCount(request.mesh()) &&
           described.elements() <= static_cast<std::uint64_t>(fuzz::kMaxElements),
       "the job's element count is not the body's");
   fuzz::Check(static_cast<int>(described.nodes()) == request.mesh().coordinates_size() / 3,

@@ -11,18 +11,19 @@
 #include "formats/file_io.h"
 #include "formats/mesh_file.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_wire/engine_mesh.h"
 #include "google/protobuf/io/coded_stream.h"
 #include "google/protobuf/io/zero_copy_stream_impl_lite.h"
 #include "google/protobuf/util/json_util.h"
-#include "remote/wire_mesh.h"
+#include "remote/grid_upload.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
+using formats::Encoding;
 using formats::FileFormat;
-using formats::VtkEncoding;
 using formats::WriteOptions;
 
 struct Variant {
@@ -32,7 +33,7 @@ struct Variant {
   WriteOptions options;
 };
 
-WriteOptions Options(VtkEncoding encoding, formats::GmshVersion version = formats::GmshVersion::k41,
+WriteOptions Options(Encoding encoding, formats::GmshVersion version = formats::GmshVersion::k41,
                      formats::VtuLayout layout = formats::VtuLayout::kAppended,
                      bool compress = false) {
   WriteOptions options;
@@ -44,7 +45,7 @@ WriteOptions Options(VtkEncoding encoding, formats::GmshVersion version = format
 }
 
 std::vector<Variant> Variants() {
-  using enum VtkEncoding;
+  using enum Encoding;
   using enum formats::GmshVersion;
   using enum formats::VtuLayout;
   return {
@@ -132,7 +133,7 @@ int Run(const fs::path& out, const std::vector<std::string>& inputs) {
         written += Write(out / target / name, *bytes) ? 1 : 0;
       }
     }
-    if (absl::StatusOr<remote::VtkWireMesh> wire = remote::ToWireMesh(document->grid); wire.ok()) {
+    if (absl::StatusOr<remote::GridWireMesh> wire = remote::ToWireMesh(document->grid); wire.ok()) {
       written += Write(out / "wire_mesh" / absl::StrCat(stem, ".upload"), WireUpload(wire->mesh));
       written += Write(out / "http_job" / absl::StrCat(stem, ".json"), HttpJobBody(wire->mesh));
     }

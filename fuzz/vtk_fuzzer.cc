@@ -14,15 +14,15 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace getme;
-  absl::StatusOr<formats::VtkFile> file =
+  absl::StatusOr<formats::UnstructuredGrid> file =
       formats::ParseVtk(absl::string_view(reinterpret_cast<const char*>(data), size));
   if (!fuzz::Accepted(file.status(), "ParseVtk")) return 0;
-  for (const formats::VtkEncoding encoding :
-       {formats::VtkEncoding::kAscii, formats::VtkEncoding::kBinary}) {
+  for (const formats::Encoding encoding : {formats::Encoding::kAscii, formats::Encoding::kBinary}) {
     fuzz::CheckWriteReadFixedPoint(
-        *file, [&](const formats::VtkFile& f) { return formats::SerializeVtk(f, encoding); },
+        *file,
+        [&](const formats::UnstructuredGrid& f) { return formats::SerializeVtk(f, encoding); },
         [](const std::string& text) { return formats::ParseVtk(text); }, fuzz::CheckSameGeometry,
-        encoding == formats::VtkEncoding::kAscii ? "VTK ASCII" : "VTK BINARY");
+        encoding == formats::Encoding::kAscii ? "VTK ASCII" : "VTK BINARY");
   }
   return 0;
 }

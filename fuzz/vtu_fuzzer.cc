@@ -11,7 +11,7 @@ namespace getme::fuzz {
 namespace {
 
 std::string Describe(const formats::WriteOptions& options) {
-  if (options.encoding == formats::VtkEncoding::kAscii) return "ascii";
+  if (options.encoding == formats::Encoding::kAscii) return "ascii";
   return absl::StrCat(options.vtu_layout == formats::VtuLayout::kInline ? "inline" : "appended",
                       options.vtu_compress ? " compressed" : "");
 }
@@ -41,9 +41,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!fuzz::Accepted(document.status(), "ParseVtu")) return 0;
   fuzz::CheckRoundTrip(*document, document->as_read);
   formats::WriteOptions options;
-  options.encoding = formats::VtkEncoding::kAscii;
+  options.encoding = formats::Encoding::kAscii;
   fuzz::CheckRoundTrip(*document, options);
-  options.encoding = formats::VtkEncoding::kBinary;
+  options.encoding = formats::Encoding::kBinary;
   options.vtu_layout = formats::VtuLayout::kInline;
   fuzz::CheckRoundTrip(*document, options);
   options.vtu_layout = formats::VtuLayout::kAppended;

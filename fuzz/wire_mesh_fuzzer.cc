@@ -1,8 +1,10 @@
 // libFuzzer target: the server's upload path without the network. The input is a stream of
 // SmoothRequest messages, each preceded by its length as a varint (what gRPC hands the handler one
-// by one); they go through the same steps as SmootherService::Smooth: header checks, chunk
-// accumulation against max_elements, expected_size, parameters, ToEngineMesh. A mesh the server
-// accepts is then sent back as result chunks and reassembled as a client does.
+// by one); they go through the same steps as SmootherService::Smooth: header checks, chunks
+// streamed into wire::MeshUpload against max_elements, expected_size, parameters, the engine
+// mesh's build. The fuzzer keeps its own plain concatenation of the chunks to check the result
+// against. A mesh the server accepts is then sent back as result chunks (wire::MeshChunker) and
+// reassembled as a client does (wire::MeshAssembler).
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -12,8 +14,11 @@
 #include "absl/strings/str_cat.h"
 #include "fuzz_check.h"
 #include "getme/v1/smoother.pb.h"
-#include "getme_server/mesh_conversion.h"
-#include "getme_server/params_conversion.h"
+#include "getme_wire/mesh_assembler.h"
+#include "getme_wire/mesh_chunker.h"
+#include "getme_wire/mesh_fields.h"
+#include "getme_wire/mesh_upload.h"
+#include "getme_wire/params.h"
 #include "google/protobuf/io/coded_stream.h"
 
 namespace getme::fuzz {
@@ -23,7 +28,9 @@ namespace {
 constexpr std::int64_t kMaxElements = 5'000;
 
 // What ReadUpload in smoother_service.cc does with each message; false = the upload is refused.
-bool ReadUpload(absl::string_view bytes, v1::SmoothHeader& header, v1::Mesh& mesh) {
+// `mesh` is the plain concatenation of the chunks (the fuzzer's own view of the upload).
+bool ReadUpload(absl::string_view bytes, v1::SmoothHeader& header, wire::MeshUpload& upload,
+                v1::Mesh& mesh) {
   google::protobuf::io::CodedInputStream input(reinterpret_cast<const std::uint8_t*>(bytes.data()),
                                                static_cast<int>(bytes.size()));
   v1::SmoothRequest request;
@@ -37,13 +44,14 @@ bool ReadUpload(absl::string_view bytes, v1::SmoothHeader& header, v1::Mesh& mes
       if (message > 0) return false;
       header = request.header();
       if (header.has_expected_size() &&
-          !server::CheckDeclaredSize(header.expected_size(), kMaxElements).ok()) {
+          !wire::CheckDeclaredSize(header.expected_size(), kMaxElements).ok()) {
         return false;
       }
     } else if (request.has_chunk()) {
-      if (!server::AppendMeshChunk(request.chunk(), kMaxElements, mesh).ok()) {
-        Check(server::WireElementCount(mesh) > kMaxElements,
-              "AppendMeshChunk refused a chunk within the limit");
+      mesh.MergeFrom(request.chunk().mesh());
+      if (!upload.Add(request.chunk()).ok()) {
+        Check(wire::WireElementCount(mesh) > kMaxElements,
+              "MeshUpload refused a chunk within the limit");
         return false;
       }
     } else {
@@ -51,7 +59,7 @@ bool ReadUpload(absl::string_view bytes, v1::SmoothHeader& header, v1::Mesh& mes
     }
   }
   return !header.has_expected_size() ||
-         server::CheckExpectedSize(header.expected_size(), mesh).ok();
+         upload.assembler().CheckExpectedSize(header.expected_size()).ok();
 }
 
 bool SameBits(double a, double b) {
@@ -60,8 +68,7 @@ bool SameBits(double a, double b) {
 
 void CheckEngineMesh(const v1::Mesh& wire, const Mesh& mesh) {
   Check(mesh.node_count() == wire.coordinates_size() / 3, "ToEngineMesh: wrong node count");
-  Check(mesh.element_count() == server::WireElementCount(wire),
-        "ToEngineMesh: wrong element count");
+  Check(mesh.element_count() == wire::WireElementCount(wire), "ToEngineMesh: wrong element count");
   for (std::int64_t node = 0; node < mesh.node_count(); ++node) {
     const int i = static_cast<int>(3 * node);
     Check(SameBits(mesh.x()[node], wire.coordinates(i)) &&
@@ -82,17 +89,16 @@ void CheckEngineMesh(const v1::Mesh& wire, const Mesh& mesh) {
         "ToEngineMesh: wrong element count of a type");
 }
 
-// The result chunks reassembled by AppendMeshChunk give back the coordinates and the topology.
-void CheckResultChunks(const v1::Mesh& wire, const Mesh& mesh, bool coordinates_only,
-                       std::uint32_t nodes_per_chunk) {
-  v1::Mesh received;
-  const bool sent = server::EmitResultChunks(
-      wire, mesh, coordinates_only, nodes_per_chunk, [&](const v1::MeshChunk& chunk) {
-        CheckOk(server::AppendMeshChunk(chunk, kMaxElements, received),
-                "AppendMeshChunk of a result chunk");
-        return true;
-      });
-  Check(sent, "EmitResultChunks stopped though every chunk was taken");
+// The result chunks reassembled by the client's assembler give back the coordinates and the
+// topology.
+void CheckResultChunks(const v1::Mesh& wire, const wire::UploadedMesh& uploaded,
+                       bool coordinates_only, std::uint32_t nodes_per_chunk) {
+  wire::MeshChunker chunker(uploaded.mesh, uploaded.ids, coordinates_only,
+                            wire::ResultChunkLimits(nodes_per_chunk));
+  wire::MeshAssembler assembler;
+  v1::MeshChunk chunk;
+  while (chunker.Next(chunk)) CheckOk(assembler.Add(chunk), "MeshAssembler of a result chunk");
+  const v1::Mesh& received = assembler.mesh();
   Check(received.coordinates_size() == wire.coordinates_size(),
         "result chunks: wrong number of coordinates");
   for (int i = 0; i < wire.coordinates_size(); ++i) {
@@ -127,15 +133,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace getme;
   v1::SmoothHeader header;
   v1::Mesh wire;
+  wire::MeshUpload upload(fuzz::kMaxElements);
   if (!fuzz::ReadUpload(absl::string_view(reinterpret_cast<const char*>(data), size), header,
-                        wire)) {
+                        upload, wire)) {
     return 0;
   }
-  absl::StatusOr<SmoothingParams> params = server::ToEngineParams(header.parameters(), 1);
+  absl::StatusOr<SmoothingParams> params = wire::ToEngineParams(header.parameters(), 1);
   if (params.ok()) fuzz::CheckOk(params->Validate(), "Validate of ToEngineParams' result");
-  absl::StatusOr<Mesh> mesh = server::ToEngineMesh(wire, fuzz::kMaxElements);
-  if (!fuzz::Accepted(mesh.status(), "ToEngineMesh")) return 0;
-  fuzz::CheckEngineMesh(wire, *mesh);
+  absl::StatusOr<wire::UploadedMesh> mesh = std::move(upload).Finish();
+  if (!fuzz::Accepted(mesh.status(), "MeshUpload")) return 0;
+  fuzz::CheckEngineMesh(wire, mesh->mesh);
   // Small chunks, so that inputs of a few nodes take more than one.
   const std::uint32_t nodes_per_chunk = header.result_options().nodes_per_chunk() % 8;
   fuzz::CheckResultChunks(wire, *mesh, /*coordinates_only=*/false, nodes_per_chunk);

@@ -7,6 +7,7 @@
 #include "absl/strings/str_join.h"
 #include "absl/strings/str_replace.h"
 #include "absl/strings/str_split.h"
+#include "cmdline/flag_parser.h"
 
 namespace getme::bench {
 
@@ -81,83 +82,113 @@ std::string GeneratorName(const std::string& arguments) {
 
 absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& args) {
   BenchOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    if (flag == "--help" || flag == "-h") {
-      options.help = true;
-      return options;
-    }
-    if (flag == "--free-boundary") {
-      options.free_boundary = true;
-      continue;
-    }
-    if (flag == "--literal") {
-      options.literal = true;
-      continue;
-    }
-    if (flag == "--write-meshes") {
-      options.write_meshes = true;
-      continue;
-    }
-    if (flag == "--service") {
-      options.service = true;
-      continue;
-    }
-    if (!flag.starts_with("--")) {
-      return absl::InvalidArgumentError(
-          absl::StrCat("unexpected argument '", flag, "'; meshes are given with --mesh PATH"));
-    }
-    if (i + 1 == args.size())
-      return absl::InvalidArgumentError(absl::StrCat(flag, " needs a value"));
-    const std::string& value = args[++i];
-    if (flag == "--mesh") {
-      options.meshes.push_back(
-          {MeshSpec::Source::kFile, value, std::filesystem::path(value).stem().string()});
-    } else if (flag == "--generate") {
-      options.meshes.push_back({MeshSpec::Source::kGenerator, value, GeneratorName(value)});
-    } else if (flag == "--name") {
-      if (options.meshes.empty()) {
-        return absl::InvalidArgumentError("--name must follow the --mesh or --generate it names");
-      }
-      options.meshes.back().name = value;
-    } else if (flag == "--methods") {
-      absl::StatusOr<std::vector<Method>> methods = ParseMethodList(value);
-      if (!methods.ok()) return methods.status();
-      options.methods = *std::move(methods);
-    } else if (flag == "--threads") {
-      absl::StatusOr<std::vector<int>> threads = ParseIntList(flag, value, 1);
-      if (!threads.ok()) return threads.status();
-      options.thread_counts = *std::move(threads);
-    } else if (flag == "--repeats") {
-      absl::StatusOr<std::vector<int>> repeats = ParseIntList(flag, value, 1);
-      if (!repeats.ok()) return repeats.status();
-      if (repeats->size() != 1) return absl::InvalidArgumentError("--repeats takes one number");
-      options.repeats = repeats->front();
-    } else if (flag == "--max-iterations") {
-      std::int64_t cap = 0;
-      if (!absl::SimpleAtoi(value, &cap) || cap < 1) {
-        return absl::InvalidArgumentError(
-            absl::StrCat("--max-iterations: '", value, "' is not an integer >= 1"));
-      }
-      options.max_iterations = cap;
-    } else if (flag == "--target-q-mean") {
-      double target = 0.0;
-      if (!absl::SimpleAtod(value, &target) || !(target >= 0.0 && target <= 1.0)) {
-        return absl::InvalidArgumentError(
-            absl::StrCat("--target-q-mean: '", value, "' is not a number in [0, 1]"));
-      }
-      options.target_q_mean = target;
-    } else if (flag == "--out") {
-      options.out_dir = value;
-    } else if (flag == "--server") {
-      options.server = value;
-      options.service = true;
-    } else if (flag == "--server-binary") {
-      options.server_binary = value;
-    } else {
-      return absl::InvalidArgumentError(absl::StrCat("unknown option ", flag));
-    }
+  const cmdline::FlagTable flags = {
+      {"--free-boundary", {false, cmdline::SetTrue(options.free_boundary)}},
+      {"--literal", {false, cmdline::SetTrue(options.literal)}},
+      {"--write-meshes", {false, cmdline::SetTrue(options.write_meshes)}},
+      {"--service", {false, cmdline::SetTrue(options.service)}},
+      {"--mesh",
+       {true,
+        [&](const std::string& value) {
+          options.meshes.push_back(
+              {MeshSpec::Source::kFile, value, std::filesystem::path(value).stem().string()});
+          return absl::OkStatus();
+        }}},
+      {"--generate",
+       {true,
+        [&](const std::string& value) {
+          options.meshes.push_back({MeshSpec::Source::kGenerator, value, GeneratorName(value)});
+          return absl::OkStatus();
+        }}},
+      {"--name",
+       {true,
+        [&](const std::string& value) {
+          if (options.meshes.empty()) {
+            return absl::InvalidArgumentError(
+                "--name must follow the --mesh or --generate it names");
+          }
+          options.meshes.back().name = value;
+          return absl::OkStatus();
+        }}},
+      {"--methods",
+       {true,
+        [&](const std::string& value) -> absl::Status {
+          absl::StatusOr<std::vector<Method>> methods = ParseMethodList(value);
+          if (!methods.ok()) return methods.status();
+          options.methods = *std::move(methods);
+          return absl::OkStatus();
+        }}},
+      {"--threads",
+       {true,
+        [&](const std::string& value) -> absl::Status {
+          absl::StatusOr<std::vector<int>> threads = ParseIntList("--threads", value, 1);
+          if (!threads.ok()) return threads.status();
+          options.thread_counts = *std::move(threads);
+          return absl::OkStatus();
+        }}},
+      {"--repeats",
+       {true,
+        [&](const std::string& value) -> absl::Status {
+          absl::StatusOr<std::vector<int>> repeats = ParseIntList("--repeats", value, 1);
+          if (!repeats.ok()) return repeats.status();
+          if (repeats->size() != 1) return absl::InvalidArgumentError("--repeats takes one number");
+          options.repeats = repeats->front();
+          return absl::OkStatus();
+        }}},
+      {"--max-iterations",
+       {true,
+        [&](const std::string& value) {
+          std::int64_t cap = 0;
+          if (!absl::SimpleAtoi(value, &cap) || cap < 1) {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--max-iterations: '", value, "' is not an integer >= 1"));
+          }
+          options.max_iterations = cap;
+          return absl::OkStatus();
+        }}},
+      {"--target-q-mean",
+       {true,
+        [&](const std::string& value) {
+          double target = 0.0;
+          if (!absl::SimpleAtod(value, &target) || !(target >= 0.0 && target <= 1.0)) {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--target-q-mean: '", value, "' is not a number in [0, 1]"));
+          }
+          options.target_q_mean = target;
+          return absl::OkStatus();
+        }}},
+      {"--out", {true, cmdline::StringFlag(options.out_dir)}},
+      {"--server",
+       {true,
+        [&](const std::string& value) {
+          options.server = value;
+          options.service = true;
+          return absl::OkStatus();
+        }}},
+      {"--server-binary", {true, cmdline::StringFlag(options.server_binary)}},
+  };
+  // getme-bench's own spelling: no "--name=value" or "--"; --help ends the parse; every argument
+  // is a flag, and a "--" word the table does not know is read with its value, then refused.
+  cmdline::ParseRules rules;
+  rules.equals_and_double_dash = false;
+  rules.help_ends_parse = true;
+  rules.flag_prefix = "";
+  const auto unexpected = [](const std::string& argument) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("unexpected argument '", argument, "'; meshes are given with --mesh PATH"));
+  };
+  rules.positional = unexpected;
+  rules.unknown = [&](const std::string& name) -> absl::StatusOr<cmdline::FlagSpec> {
+    if (!name.starts_with("--")) return unexpected(name);
+    return cmdline::FlagSpec{
+        true, [name](const std::string&) {
+          return absl::InvalidArgumentError(absl::StrCat("unknown option ", name));
+        }};
+  };
+  if (absl::Status status = cmdline::ParseFlags(args, flags, rules, options.help); !status.ok()) {
+    return status;
   }
+  if (options.help) return options;
   if (options.meshes.empty()) {
     return absl::InvalidArgumentError("no mesh: give at least one --mesh or --generate");
   }

@@ -27,7 +27,7 @@ struct BenchOptions {
                                  Method::kGetme, Method::kWarpage};
   std::vector<int> thread_counts = {1};
   int repeats = 3;
-  // As `getme smooth` has them (cli::ToSmoothingParams): --free-boundary, --literal,
+  // As `getme smooth` has them (cmdline::ToSmoothingParams): --free-boundary, --literal,
   // --max-iterations (a cap on every phase, e.g. to time a fixed number of iterations on 10M
   // elements).
   bool free_boundary = false;

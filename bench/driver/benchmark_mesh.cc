@@ -9,8 +9,8 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
+#include "formats/grid_mesh.h"
 #include "formats/mesh_file.h"
-#include "formats/vtk_mesh.h"
 #include "getme/meshgen/meshgen_command.h"
 #include "peak_memory.h"
 
@@ -20,7 +20,7 @@ namespace {
 absl::StatusOr<Mesh> ReadMesh(const std::string& path) {
   absl::StatusOr<formats::MeshDocument> document = formats::ReadMeshDocument(path);
   if (!document.ok()) return document.status();
-  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(document->grid);
+  absl::StatusOr<formats::GridMesh> converted = formats::GridToMesh(document->grid);
   if (!converted.ok()) {
     return absl::Status(converted.status().code(),
                         absl::StrCat(path, ": ", converted.status().message()));

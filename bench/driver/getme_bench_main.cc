@@ -18,8 +18,8 @@
 #include "absl/strings/str_join.h"
 #include "bench_options.h"
 #include "benchmark_mesh.h"
-#include "cli/cli_options.h"
-#include "formats/vtk_mesh.h"
+#include "cmdline/smoothing_flags.h"
+#include "formats/grid_mesh.h"
 #include "formats/vtk_writer.h"
 #include "in_process_run.h"
 #include "run_measurement.h"
@@ -68,13 +68,13 @@ Measurement Measure(BenchmarkMesh& mesh, Method method, int threads, RunMode mod
 
 // The engine parameters `getme smooth` would use with the same options.
 SmoothingParams ParamsFor(const BenchOptions& options, Method method, int threads) {
-  cli::SmoothCommandOptions smooth;
+  cmdline::SmoothingFlags smooth;
   smooth.method = method;
   smooth.threads = threads;
   smooth.free_boundary = options.free_boundary;
   smooth.literal = options.literal;
   smooth.max_iterations = options.max_iterations;
-  return cli::ToSmoothingParams(smooth);
+  return cmdline::ToSmoothingParams(smooth);
 }
 
 void PrintProgress(const Measurement& measurement) {
@@ -100,7 +100,8 @@ absl::Status WriteText(const std::string& path, const std::string& text) {
 }
 
 absl::Status WriteMesh(const std::string& path, const Mesh& mesh, const std::string& title) {
-  return formats::WriteVtkFile(path, formats::FromMesh(mesh, title), formats::VtkEncoding::kBinary);
+  return formats::WriteVtkFile(path, formats::GridFromMesh(mesh, title),
+                               formats::Encoding::kBinary);
 }
 
 // Writes the measurement's JSON and trace (and, with --write-meshes, the mesh as the last repeat

@@ -5,10 +5,10 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_format.h"
-#include "cli/json_events.h"
-#include "cli/json_output.h"
-#include "cli/reports.h"
-#include "cli/trace_file.h"
+#include "events/json_events.h"
+#include "events/json_output.h"
+#include "events/reports.h"
+#include "events/trace_file.h"
 
 namespace getme::bench {
 namespace {
@@ -28,7 +28,7 @@ std::optional<Spread> SpreadOver(const Measurement& measurement, const RepeatVal
 
 std::string SpreadJson(const std::optional<Spread>& spread) {
   if (!spread.has_value()) return "null";
-  return cli::JsonObject()
+  return events::JsonObject()
       .AddDouble("median", spread->median)
       .AddDouble("min", spread->min)
       .AddDouble("max", spread->max)
@@ -36,7 +36,7 @@ std::string SpreadJson(const std::optional<Spread>& spread) {
 }
 
 std::string OptionalJson(const std::optional<double>& value) {
-  return value.has_value() ? cli::JsonNumber(*value) : "null";
+  return value.has_value() ? events::JsonNumber(*value) : "null";
 }
 
 const RepeatValue kWall = [](const RunMeasurement& r) { return r.wall_seconds; };
@@ -51,9 +51,9 @@ const RepeatValue kServerPeakRss = [](const RunMeasurement& r) -> std::optional<
   return static_cast<double>(*r.server_peak_rss_bytes);
 };
 
-cli::SmoothReport ReportOf(const RunMeasurement& run, const Measurement& measurement,
-                           const BenchmarkMesh& mesh) {
-  cli::SmoothReport report;
+events::SmoothReport ReportOf(const RunMeasurement& run, const Measurement& measurement,
+                              const BenchmarkMesh& mesh) {
+  events::SmoothReport report;
   report.input = mesh.spec.path_or_arguments;
   report.method = measurement.method;
   report.nodes = mesh.mesh.node_count();
@@ -65,7 +65,7 @@ cli::SmoothReport ReportOf(const RunMeasurement& run, const Measurement& measure
 }
 
 std::string RepeatJson(const RunMeasurement& run) {
-  return cli::JsonObject()
+  return events::JsonObject()
       .AddDouble("wall_seconds", run.wall_seconds)
       .AddDouble("engine_seconds", run.result.seconds)
       .AddRaw("seconds_to_99_percent_gain", OptionalJson(run.seconds_to_99_percent_gain))
@@ -105,7 +105,7 @@ std::string MeasurementFileStem(const Measurement& measurement) {
 std::string MeasurementJson(const Measurement& measurement, const BenchmarkMesh& mesh,
                             const std::string& trace_file) {
   if (measurement.repeats.empty()) {
-    return cli::JsonObject()
+    return events::JsonObject()
         .AddString("mesh", measurement.mesh)
         .AddString("spec", mesh.spec.path_or_arguments)
         .AddString("method", MethodName(measurement.method))
@@ -115,7 +115,7 @@ std::string MeasurementJson(const Measurement& measurement, const BenchmarkMesh&
         .Build();
   }
   const RunMeasurement& median = measurement.repeats[MedianRepeat(measurement)];
-  cli::JsonObject by_type;
+  events::JsonObject by_type;
   for (const ElementType type : kAllElementTypes) {
     by_type.AddInt(TypeName(type), mesh.mesh.element_count(type));
   }
@@ -124,7 +124,7 @@ std::string MeasurementJson(const Measurement& measurement, const BenchmarkMesh&
     absl::StrAppend(&runs, i > 0 ? "," : "", RepeatJson(measurement.repeats[i]));
   }
   runs += "]";
-  return cli::JsonObject()
+  return events::JsonObject()
       .AddString("mesh", measurement.mesh)
       .AddString("source", mesh.spec.source == MeshSpec::Source::kFile ? "file" : "generator")
       .AddString("spec", mesh.spec.path_or_arguments)
@@ -148,19 +148,19 @@ std::string MeasurementJson(const Measurement& measurement, const BenchmarkMesh&
       .AddRaw("peak_rss_bytes", SpreadJson(SpreadOver(measurement, kPeakRss)))
       .AddRaw("server_peak_rss_bytes", SpreadJson(SpreadOver(measurement, kServerPeakRss)))
       .AddString("trace", trace_file)
-      .AddRaw("result", cli::SmoothResultJson(ReportOf(median, measurement, mesh)))
+      .AddRaw("result", events::SmoothResultJson(ReportOf(median, measurement, mesh)))
       .AddRaw("runs", runs)
       .Build();
 }
 
 absl::Status WriteTrace(const std::string& path, const Measurement& measurement,
                         const BenchmarkMesh& mesh) {
-  absl::StatusOr<std::unique_ptr<cli::TraceFile>> trace = cli::TraceFile::Open(path);
+  absl::StatusOr<std::unique_ptr<events::TraceFile>> trace = events::TraceFile::Open(path);
   if (!trace.ok()) return trace.status();
   const RunMeasurement& median = measurement.repeats[MedianRepeat(measurement)];
   for (const ProgressEvent& event : median.trace)
-    (*trace)->WriteLine(cli::ProgressEventJson(event));
-  (*trace)->WriteLine(cli::SmoothResultJson(ReportOf(median, measurement, mesh)));
+    (*trace)->WriteLine(events::ProgressEventJson(event));
+  (*trace)->WriteLine(events::SmoothResultJson(ReportOf(median, measurement, mesh)));
   return (*trace)->Close();
 }
 

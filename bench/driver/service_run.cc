@@ -2,10 +2,14 @@
 
 #include <chrono>
 
+#include "getme_wire/engine_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
 #include "in_process_run.h"
 #include "peak_memory.h"
-#include "remote/wire_conversion.h"
-#include "remote/wire_mesh.h"
+#include "remote/grid_upload.h"
 
 namespace getme::bench {
 
@@ -21,31 +25,30 @@ absl::StatusOr<RunMeasurement> ServiceSession::Run(BenchmarkMesh& mesh,
   run.peak_rss_reset = ResetPeakRss();
   const bool server_reset = server_pid_ > 0 && ResetPeakRss(server_pid_);
   remote::SmoothJobOptions job;
-  job.parameters = remote::ToWireParameters(params);
+  job.parameters = wire::ToWireParameters(params);
   job.result_options.set_coordinates_only(true);
 
   const auto start = std::chrono::steady_clock::now();
   const auto seconds_since_start = [&start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  const v1::Mesh wire_mesh = remote::ToWireMesh(mesh.mesh);
+  const v1::Mesh wire_mesh = wire::ToWireMesh(mesh.mesh);
   const remote::ProgressHandler on_progress = [&](const v1::ProgressEvent& event) {
     // The job's closing marker repeats the last phase end; it is not an engine event.
     if (event.final() && !event.phase_done()) return;
     if (run.trace.empty()) run.first_event_wall_seconds = seconds_since_start();
-    run.trace.push_back(remote::FromWireProgress(event));
+    run.trace.push_back(wire::FromWireProgress(event));
   };
   absl::StatusOr<remote::RemoteSmoothResult> result = client_.Smooth(wire_mesh, job, on_progress);
   if (!result.ok()) return result.status();
-  if (absl::Status status =
-          remote::ApplyCoordinates(remote::CoordinatesOf(result->mesh), mesh.mesh);
+  if (absl::Status status = wire::ApplyCoordinates(wire::CoordinatesOf(result->mesh), mesh.mesh);
       !status.ok()) {
     return status;
   }
   run.wall_seconds = seconds_since_start();
   run.peak_rss_bytes = PeakRssBytes();
   if (server_reset) run.server_peak_rss_bytes = ProcessPeakRssBytes(server_pid_);
-  run.result = remote::FromWireResult(result->result);
+  run.result = wire::FromWireResult(result->result);
   DeriveTraceTimes(run, target_q_mean);
   return run;
 }

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "absl/strings/str_format.h"
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "formats/vtk_writer.h"
 #include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/meshgen_command.h"
@@ -61,10 +61,10 @@ int Run(std::span<const std::string> args) {
   const double generate_peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
   const std::string title =
       absl::StrFormat("getme-meshgen %s seed %d", KindName(command->kind), command->seed);
-  const formats::VtkFile file = formats::FromMesh(*mesh, title);
+  const formats::UnstructuredGrid file = formats::GridFromMesh(*mesh, title);
   if (absl::Status status = formats::WriteVtkFile(
           command->output_path, file,
-          command->binary ? formats::VtkEncoding::kBinary : formats::VtkEncoding::kAscii);
+          command->binary ? formats::Encoding::kBinary : formats::Encoding::kAscii);
       !status.ok()) {
     absl::FPrintF(stderr, "getme-meshgen: %s\n", status.ToString());
     return 1;

@@ -19,8 +19,8 @@ namespace {
 
 constexpr int kBatch = 1024;
 
-// The regular element of each type with edge length 1 (node 0 at the origin, the columns of W
-// of NOTES.md §2 as its edges from node 0).
+// The regular element of each type with edge length 1 (node 0 at the origin; the edges spanning
+// node 0's node tetrahedron are the columns of W, paper eq. (10), for the hexahedron rotated).
 template <ElementType kType>
 ElementNodes<kType> RegularElement() {
   const double h = std::sqrt(3.0) / 2.0;

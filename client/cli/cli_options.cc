@@ -1,11 +1,9 @@
 #include "cli/cli_options.h"
 
-#include <functional>
-#include <map>
-
 #include "absl/strings/match.h"
-#include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "cmdline/flag_parser.h"
+#include "cmdline/smoothing_flags.h"
 
 namespace getme::cli {
 
@@ -165,86 +163,29 @@ Exit status: 0 success; 1 IN cannot be read or OUT cannot be written; 2 usage er
 
 namespace {
 
-// A flag: whether it takes a value, and what to do with it.
-struct FlagSpec {
-  bool takes_value;
-  std::function<absl::Status(const std::string& value)> apply;
-};
+using cmdline::FlagSpec;
+using cmdline::IntegerFlag;
+using cmdline::SetTrue;
+using cmdline::StringFlag;
 
-// Walks `args`: "--name value", "--name=value", positionals (everything after "--" too).
+// Walks `args` (cmdline::ParseFlags): "--name value", "--name=value", positionals (everything
+// after "--" too); a flag not in `flags` is refused naming the command.
 absl::Status ParseArguments(absl::string_view command, const std::vector<std::string>& args,
-                            const std::map<std::string, FlagSpec>& flags,
-                            std::vector<std::string>& positionals, bool& help) {
-  bool only_positionals = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (only_positionals || arg.size() < 2 || arg[0] != '-') {
-      positionals.push_back(arg);
-      continue;
-    }
-    if (arg == "--") {
-      only_positionals = true;
-      continue;
-    }
-    if (arg == "-h" || arg == "--help") {
-      help = true;
-      continue;
-    }
-    const std::size_t equals = arg.find('=');
-    const std::string name = arg.substr(0, equals);
-    const auto flag = flags.find(name);
-    if (flag == flags.end()) {
-      return absl::InvalidArgumentError(absl::StrCat("unknown option '", name, "' for 'getme ",
-                                                     command, "'; see 'getme ", command,
-                                                     " --help'"));
-    }
-    std::string value;
-    if (flag->second.takes_value) {
-      if (equals != std::string::npos) {
-        value = arg.substr(equals + 1);
-      } else if (i + 1 < args.size()) {
-        value = args[++i];
-      } else {
-        return absl::InvalidArgumentError(absl::StrCat("option ", name, " needs a value"));
-      }
-    } else if (equals != std::string::npos) {
-      return absl::InvalidArgumentError(absl::StrCat("option ", name, " takes no value"));
-    }
-    if (absl::Status status = flag->second.apply(value); !status.ok()) return status;
-  }
-  return absl::OkStatus();
-}
-
-template <typename Int>
-std::function<absl::Status(const std::string&)> IntegerFlag(absl::string_view name, Int& target,
-                                                            Int min, Int max) {
-  return [name = std::string(name), &target, min, max](const std::string& value) {
-    Int parsed = 0;
-    if (!absl::SimpleAtoi(value, &parsed) || parsed < min || parsed > max) {
-      return absl::InvalidArgumentError(absl::StrCat("option ", name, " expects an integer in [",
-                                                     min, ", ", max, "], got '", value, "'"));
-    }
-    target = parsed;
+                            const cmdline::FlagTable& flags, std::vector<std::string>& positionals,
+                            bool& help) {
+  cmdline::ParseRules rules;
+  rules.positional = [&positionals](const std::string& arg) {
+    positionals.push_back(arg);
     return absl::OkStatus();
   };
-}
-
-std::function<absl::Status(const std::string&)> SetTrue(bool& target) {
-  return [&target](const std::string&) {
-    target = true;
-    return absl::OkStatus();
+  rules.unknown = [command](const std::string& name) -> absl::StatusOr<FlagSpec> {
+    return absl::InvalidArgumentError(absl::StrCat("unknown option '", name, "' for 'getme ",
+                                                   command, "'; see 'getme ", command, " --help'"));
   };
+  return cmdline::ParseFlags(args, flags, rules, help);
 }
 
-std::function<absl::Status(const std::string&)> StringFlag(std::string& target) {
-  return [&target](const std::string& value) {
-    target = value;
-    return absl::OkStatus();
-  };
-}
-
-std::function<absl::Status(const std::string&)> InputFormatFlag(
-    std::optional<formats::FileFormat>& target) {
+cmdline::FlagAction InputFormatFlag(std::optional<formats::FileFormat>& target) {
   return [&target](const std::string& value) -> absl::Status {
     absl::StatusOr<formats::FormatChoice> choice = formats::ParseFormatName(value);
     if (!choice.ok()) return choice.status();
@@ -255,8 +196,7 @@ std::function<absl::Status(const std::string&)> InputFormatFlag(
 
 // The flags every command that reads and writes mesh files takes. `binary` / `ascii` are
 // resolved by ResolveFileFlags once all arguments are seen.
-void AddFileFlags(FileOptions& files, bool& binary, bool& ascii,
-                  std::map<std::string, FlagSpec>& flags) {
+void AddFileFlags(FileOptions& files, bool& binary, bool& ascii, cmdline::FlagTable& flags) {
   flags["--input-format"] = {true, InputFormatFlag(files.input_format)};
   flags["--format"] = {true, [&files](const std::string& value) -> absl::Status {
                          absl::StatusOr<formats::FormatChoice> choice =
@@ -272,15 +212,15 @@ void AddFileFlags(FileOptions& files, bool& binary, bool& ascii,
 
 absl::Status ResolveFileFlags(bool binary, bool ascii, FileOptions& files) {
   if (binary && ascii) return absl::InvalidArgumentError("--binary and --ascii exclude each other");
-  if (binary) files.encoding = formats::VtkEncoding::kBinary;
-  if (ascii) files.encoding = formats::VtkEncoding::kAscii;
+  if (binary) files.encoding = formats::Encoding::kBinary;
+  if (ascii) files.encoding = formats::Encoding::kAscii;
   return absl::OkStatus();
 }
 
 constexpr int kMaxThreads = 1024;
 
 // HOST:PORT, [IPv6]:PORT, or any other gRPC target with a scheme (unix:/path, dns:///host:port).
-std::function<absl::Status(const std::string&)> ServerFlag(std::string& target) {
+cmdline::FlagAction ServerFlag(std::string& target) {
   return [&target](const std::string& value) {
     const bool has_scheme =
         value.find(":/") != std::string::npos || absl::StartsWith(value, "unix:");
@@ -295,7 +235,7 @@ std::function<absl::Status(const std::string&)> ServerFlag(std::string& target) 
   };
 }
 
-void AddAccessFlags(ServerAccessOptions& access, std::map<std::string, FlagSpec>& flags) {
+void AddAccessFlags(ServerAccessOptions& access, cmdline::FlagTable& flags) {
   flags["--token-file"] = {true, StringFlag(access.token_file)};
   flags["--tls-ca"] = {true, StringFlag(access.tls_ca)};
   flags["--tls-cert"] = {true, StringFlag(access.tls_cert)};
@@ -321,7 +261,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
   std::int64_t max_iterations = 0;
   bool binary = false;
   bool ascii = false;
-  std::map<std::string, FlagSpec> flags = {
+  cmdline::FlagTable flags = {
       {"--method",
        {true,
         [&](const std::string& value) -> absl::Status {
@@ -383,7 +323,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
 
 absl::StatusOr<QualityCommandOptions> ParseQualityArguments(const std::vector<std::string>& args) {
   QualityCommandOptions options;
-  std::map<std::string, FlagSpec> flags = {
+  cmdline::FlagTable flags = {
       {"--bins", {true, IntegerFlag<int>("--bins", options.bins, 1, 10000)}},
       {"--threads", {true, IntegerFlag<int>("--threads", options.threads, 0, kMaxThreads)}},
       {"--json", {false, SetTrue(options.json)}},
@@ -411,7 +351,7 @@ absl::StatusOr<JobsCommandOptions> ParseJobsArguments(const std::vector<std::str
   JobsCommandOptions options;
   bool binary = false;
   bool ascii = false;
-  std::map<std::string, FlagSpec> flags = {
+  cmdline::FlagTable flags = {
       {"--server", {true, ServerFlag(options.server)}},
       {"--input", {true, StringFlag(options.input)}},
       {"--json", {false, SetTrue(options.json)}},
@@ -481,7 +421,7 @@ absl::StatusOr<ReportCommandOptions> ParseReportArguments(const std::vector<std:
     options.picture_format = value;
     return absl::OkStatus();
   };
-  const std::map<std::string, FlagSpec> flags = {
+  const cmdline::FlagTable flags = {
       {"--trace", {true, StringFlag(options.trace)}},
       {"--picture-format", {true, picture_format}},
       {"--format", {true, picture_format}},
@@ -514,7 +454,7 @@ absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(const std::vector<st
   ConvertCommandOptions options;
   bool binary = false;
   bool ascii = false;
-  std::map<std::string, FlagSpec> flags;
+  cmdline::FlagTable flags;
   AddFileFlags(options.files, binary, ascii, flags);
   std::vector<std::string> positionals;
   if (absl::Status status = ParseArguments("convert", args, flags, positionals, options.help);
@@ -536,19 +476,14 @@ absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(const std::vector<st
 }
 
 SmoothingParams ToSmoothingParams(const SmoothCommandOptions& options) {
-  SmoothingParams params;
-  params.method = options.method;
-  params.threads = options.threads;
-  params.fix_boundary = !options.free_boundary;
-  params.untangle = !options.no_untangle;
-  if (options.literal) params.UseLiteralPaperAlgorithm();
-  if (options.max_iterations) {
-    params.untangle_max_iterations = *options.max_iterations;
-    params.simultaneous_max_iterations = *options.max_iterations;
-    params.sequential_max_iterations = *options.max_iterations;
-    params.laplace_max_iterations = *options.max_iterations;
-  }
-  return params;
+  cmdline::SmoothingFlags flags;
+  flags.method = options.method;
+  flags.threads = options.threads;
+  flags.max_iterations = options.max_iterations;
+  flags.free_boundary = options.free_boundary;
+  flags.literal = options.literal;
+  flags.no_untangle = options.no_untangle;
+  return cmdline::ToSmoothingParams(flags);
 }
 
 }  // namespace getme::cli

@@ -7,7 +7,7 @@
 
 #include "absl/status/statusor.h"
 #include "formats/mesh_file.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 #include "getme/smoothing/smoothing_params.h"
 
 namespace getme::cli {
@@ -24,7 +24,7 @@ extern const char kConvertUsage[];
 struct FileOptions {
   std::optional<formats::FileFormat> input_format;
   std::optional<formats::FormatChoice> output_format;
-  std::optional<formats::VtkEncoding> encoding;
+  std::optional<formats::Encoding> encoding;
   bool compress = false;  // .vtu: zlib-compressed blocks
 };
 

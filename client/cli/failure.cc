@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "cli/json_events.h"
+#include "events/json_events.h"
 
 namespace getme::cli {
 
@@ -11,7 +11,7 @@ int ReportFailure(const absl::Status& status, bool json, int exit_status) {
   std::fprintf(stderr, "getme: %s\n", std::string(status.message()).c_str());
   std::fflush(stderr);
   if (json) {
-    std::printf("%s\n", ErrorJson(status).c_str());
+    std::printf("%s\n", events::ErrorJson(status).c_str());
     std::fflush(stdout);
   }
   return exit_status;
@@ -26,7 +26,7 @@ int ReportRemoteFailure(const absl::Status& status, bool json, int exit_status) 
                std::string(status.message()).c_str(), hint);
   std::fflush(stderr);
   if (json) {
-    std::printf("%s\n", ErrorJson(status).c_str());
+    std::printf("%s\n", events::ErrorJson(status).c_str());
     std::fflush(stdout);
   }
   return exit_status;

@@ -6,16 +6,20 @@
 
 #include "absl/strings/str_cat.h"
 #include "cli/failure.h"
-#include "cli/interrupt_flag.h"
-#include "cli/json_events.h"
+#include "cli/interrupt_scope.h"
 #include "cli/mesh_files.h"
 #include "cli/progress_printer.h"
 #include "cli/remote_output.h"
 #include "cli/server_access.h"
 #include "cli/text_reports.h"
+#include "events/json_events.h"
+#include "getme_wire/engine_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
+#include "remote/grid_upload.h"
 #include "remote/smoother_client.h"
-#include "remote/wire_conversion.h"
-#include "remote/wire_mesh.h"
 
 namespace getme::cli {
 namespace {
@@ -52,7 +56,7 @@ int Watch(remote::SmootherClient& client, const JobsCommandOptions& options) {
   absl::Status watched;
   bool interrupted = false;
   {
-    InterruptFlagScope interrupt;
+    InterruptScope interrupt;
     remote::CallOptions call;
     call.cancel = &interrupt.flag();
     watched = client.WatchJob(
@@ -61,9 +65,9 @@ int Watch(remote::SmootherClient& client, const JobsCommandOptions& options) {
           // The job's closing marker repeats the state of the last phase end; it is not an engine
           // event, and local mode has no such line.
           if (wire_event.final() && !wire_event.phase_done()) return;
-          const ProgressEvent event = remote::FromWireProgress(wire_event);
+          const ProgressEvent event = wire::FromWireProgress(wire_event);
           if (options.json) {
-            std::printf("%s\n", ProgressEventJson(event).c_str());
+            std::printf("%s\n", events::ProgressEventJson(event).c_str());
             std::fflush(stdout);
           } else {
             printer.OnEvent(event);
@@ -99,8 +103,8 @@ int Fetch(remote::SmootherClient& client, const JobsCommandOptions& options) {
   if (!document.ok()) return ReportFailure(document.status(), options.json, kExitFailure);
   absl::StatusOr<OutputTarget> output = ResolveOutput(*document, options.output, options.files);
   if (!output.ok()) return ReportFailure(output.status(), options.json, kExitFailure);
-  const formats::VtkFile* file = &document->grid;
-  absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(*file);
+  const formats::UnstructuredGrid* file = &document->grid;
+  absl::StatusOr<remote::GridWireMesh> sent = remote::ToWireMesh(*file);
   if (!sent.ok()) return ReportFailure(sent.status(), options.json, kExitFailure);
   // The method is only on the job; ask before fetching (a fetched result is dropped).
   absl::StatusOr<v1::Job> job = client.GetJob(options.job_id);
@@ -114,16 +118,16 @@ int Fetch(remote::SmootherClient& client, const JobsCommandOptions& options) {
             options.input, " has ", file->point_count(), " points; is it the submitted file?")),
         options.json, kExitFailure);
   }
-  const SmoothReport report =
-      MakeRemoteSmoothReport(options.input, options.output, remote::FromWireMethod(job->method()),
+  const events::SmoothReport report =
+      MakeRemoteSmoothReport(options.input, options.output, wire::MethodOrGetme(job->method()),
                              *file, *sent, result->result);
   if (absl::Status status =
-          WriteSmoothedFile(remote::CoordinatesOf(result->mesh), *output, *document);
+          WriteSmoothedFile(wire::CoordinatesOf(result->mesh), *output, *document);
       !status.ok()) {
     return ReportFailure(status, options.json, kExitFailure);
   }
   if (options.json) {
-    std::printf("%s\n", SmoothResultJson(report).c_str());
+    std::printf("%s\n", events::SmoothResultJson(report).c_str());
   } else {
     std::fputs(FormatSmoothSummary(report).c_str(), stdout);
   }

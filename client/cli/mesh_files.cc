@@ -37,13 +37,13 @@ absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
     target.options.vtu_compress = true;
   }
   if (target.format == formats::FileFormat::kMedit &&
-      target.options.encoding == formats::VtkEncoding::kBinary) {
+      target.options.encoding == formats::Encoding::kBinary) {
     if (files.encoding.has_value()) {
       return absl::InvalidArgumentError(
           "MEDIT output is ASCII only: the binary .meshb needs libMeshb, which Debian does not "
           "package");
     }
-    target.options.encoding = formats::VtkEncoding::kAscii;
+    target.options.encoding = formats::Encoding::kAscii;
   }
   return target;
 }
@@ -54,7 +54,7 @@ absl::Status WriteOutputMesh(const formats::MeshDocument& document, const Output
       !status.ok()) {
     return status;
   }
-  const bool binary = target.options.encoding == formats::VtkEncoding::kBinary;
+  const bool binary = target.options.encoding == formats::Encoding::kBinary;
   std::string variant = binary ? "binary" : "ascii";
   if (target.format == formats::FileFormat::kGmsh) {
     variant = absl::StrCat(

@@ -4,10 +4,10 @@
 
 #include "absl/strings/str_cat.h"
 #include "cli/failure.h"
-#include "cli/json_events.h"
 #include "cli/text_reports.h"
+#include "events/json_events.h"
+#include "formats/grid_mesh.h"
 #include "formats/mesh_file.h"
-#include "formats/vtk_mesh.h"
 #include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
 
@@ -17,8 +17,8 @@ int RunQualityCommand(const QualityCommandOptions& options) {
   absl::StatusOr<formats::MeshDocument> document =
       formats::ReadMeshDocument(options.input, options.input_format);
   if (!document.ok()) return ReportFailure(document.status(), options.json, kExitFailure);
-  const formats::VtkFile* file = &document->grid;
-  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(*file);
+  const formats::UnstructuredGrid* file = &document->grid;
+  absl::StatusOr<formats::GridMesh> converted = formats::GridToMesh(*file);
   if (!converted.ok()) {
     return ReportFailure(
         absl::Status(converted.status().code(),
@@ -29,7 +29,7 @@ int RunQualityCommand(const QualityCommandOptions& options) {
   QualityOptions quality_options;
   quality_options.histogram_bins = options.bins;
 
-  QualityReport report;
+  events::QualityReport report;
   report.input = options.input;
   report.nodes = converted->mesh.node_count();
   report.passthrough_cells = file->cells.size() - converted->mesh.element_count();
@@ -38,7 +38,7 @@ int RunQualityCommand(const QualityCommandOptions& options) {
     report.first_invalid_cells.push_back(converted->element_cells[element]);
   }
   if (options.json) {
-    std::printf("%s\n", QualityReportJson(report).c_str());
+    std::printf("%s\n", events::QualityReportJson(report).c_str());
   } else {
     std::fputs(FormatQualityReport(report).c_str(), stdout);
   }

@@ -4,18 +4,22 @@
 
 #include "absl/strings/str_cat.h"
 #include "cli/failure.h"
-#include "cli/interrupt_flag.h"
-#include "cli/json_events.h"
-#include "cli/json_output.h"
+#include "cli/interrupt_scope.h"
 #include "cli/remote_output.h"
 #include "cli/server_access.h"
 #include "cli/smooth_run.h"
 #include "cli/text_reports.h"
+#include "events/json_events.h"
+#include "events/json_output.h"
 #include "formats/mesh_file.h"
 #include "formats/vtk_cell_type.h"
+#include "getme_wire/engine_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
+#include "remote/grid_upload.h"
 #include "remote/smoother_client.h"
-#include "remote/wire_conversion.h"
-#include "remote/wire_mesh.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
@@ -25,7 +29,7 @@ absl::Status WithInput(const std::string& input, const absl::Status& status) {
   return absl::Status(status.code(), absl::StrCat(input, ": ", status.message()));
 }
 
-int SubmitDetached(remote::SmootherClient& client, const remote::VtkWireMesh& sent,
+int SubmitDetached(remote::SmootherClient& client, const remote::GridWireMesh& sent,
                    const remote::SmoothJobOptions& job, const SmoothCommandOptions& options) {
   absl::StatusOr<v1::Job> submitted = client.SubmitJob(sent.mesh, job);
   if (!submitted.ok()) return ReportRemoteFailure(submitted.status(), options.json, kExitFailure);
@@ -64,12 +68,12 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
   if (absl::Status status = params.Validate(); !status.ok()) return fail(status, kExitUsage);
   absl::StatusOr<SmoothRun> run = PrepareSmoothRun(options);
   if (!run.ok()) return fail(run.status(), kExitFailure);
-  absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(run->document.grid);
+  absl::StatusOr<remote::GridWireMesh> sent = remote::ToWireMesh(run->document.grid);
   if (!sent.ok()) return fail(WithInput(options.input, sent.status()), kExitFailure);
   AddFixedNodes(run->option_fixed, sent->mesh);
 
   remote::SmoothJobOptions job;
-  job.parameters = remote::ToWireParameters(params);
+  job.parameters = wire::ToWireParameters(params);
   job.result_options.set_coordinates_only(true);
   spdlog::info("read {} ({}): {} nodes, {} volume elements; smoothing on {}", options.input,
                formats::FormatDisplayName(run->document.format), run->document.grid.point_count(),
@@ -86,12 +90,12 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     // The job's closing marker repeats the state of the last phase end; it is not an engine
     // event, and local mode has no such line.
     if (wire_event.final() && !wire_event.phase_done()) return;
-    sink.OnEvent(remote::FromWireProgress(wire_event));
+    sink.OnEvent(wire::FromWireProgress(wire_event));
   };
   absl::StatusOr<remote::RemoteSmoothResult> result;
   bool interrupted = false;
   {
-    InterruptFlagScope interrupt;
+    InterruptScope interrupt;
     remote::CallOptions call;
     call.cancel = &interrupt.flag();
     result = client.Smooth(sent->mesh, job, progress, call);
@@ -107,10 +111,10 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     }
     return ReportRemoteFailure(result.status(), options.json, kExitFailure);
   }
-  const SmoothReport report = MakeRemoteSmoothReport(options.input, options.output, options.method,
-                                                     run->document.grid, *sent, result->result);
+  const events::SmoothReport report = MakeRemoteSmoothReport(
+      options.input, options.output, options.method, run->document.grid, *sent, result->result);
   if (absl::Status status =
-          WriteSmoothedFile(remote::CoordinatesOf(result->mesh), *run->output, run->document);
+          WriteSmoothedFile(wire::CoordinatesOf(result->mesh), *run->output, run->document);
       !status.ok()) {
     return fail(status, kExitFailure);
   }
@@ -124,8 +128,8 @@ int RunRemoteQualityCommand(const QualityCommandOptions& options) {
   absl::StatusOr<formats::MeshDocument> document =
       formats::ReadMeshDocument(options.input, options.input_format);
   if (!document.ok()) return ReportFailure(document.status(), options.json, kExitFailure);
-  const formats::VtkFile* file = &document->grid;
-  absl::StatusOr<remote::VtkWireMesh> sent = remote::ToWireMesh(*file);
+  const formats::UnstructuredGrid* file = &document->grid;
+  absl::StatusOr<remote::GridWireMesh> sent = remote::ToWireMesh(*file);
   if (!sent.ok()) {
     return ReportFailure(WithInput(options.input, sent.status()), options.json, kExitFailure);
   }
@@ -138,12 +142,12 @@ int RunRemoteQualityCommand(const QualityCommandOptions& options) {
   if (!wire_report.ok()) {
     return ReportRemoteFailure(wire_report.status(), options.json, kExitFailure);
   }
-  QualityReport report;
+  events::QualityReport report;
   report.input = options.input;
   report.nodes = file->point_count();
   report.passthrough_cells =
       file->cells.size() - static_cast<std::int64_t>(sent->element_cells.size());
-  report.quality = remote::FromWireQuality(*wire_report);
+  report.quality = wire::FromWireQuality(*wire_report);
   // The server numbers elements by type (mesh.proto); report them as the local mode does: element
   // ids in file order of the volume cells, and the file's cell numbers.
   std::vector<ElementId> file_order_ids(file->cells.size(), -1);
@@ -158,7 +162,7 @@ int RunRemoteQualityCommand(const QualityCommandOptions& options) {
     element = file_order_ids[cell];
   }
   if (options.json) {
-    std::printf("%s\n", QualityReportJson(report).c_str());
+    std::printf("%s\n", events::QualityReportJson(report).c_str());
   } else {
     std::fputs(FormatQualityReport(report).c_str(), stdout);
   }

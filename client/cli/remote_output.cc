@@ -1,33 +1,37 @@
 #include "cli/remote_output.h"
 
 #include "absl/strings/str_format.h"
-#include "cli/json_output.h"
-#include "formats/vtk_mesh.h"
-#include "remote/wire_conversion.h"
+#include "events/json_output.h"
+#include "formats/grid_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
 
 absl::Status WriteSmoothedFile(std::span<const double> coordinates, const OutputTarget& output,
                                formats::MeshDocument& document) {
-  formats::VtkFile& file = document.grid;
+  formats::UnstructuredGrid& file = document.grid;
   if (absl::Status status = remote::ApplyCoordinates(coordinates, file); !status.ok()) {
     return status;
   }
-  absl::StatusOr<formats::VtkMesh> smoothed = formats::ToMesh(file);
+  absl::StatusOr<formats::GridMesh> smoothed = formats::GridToMesh(file);
   if (!smoothed.ok()) return smoothed.status();
-  if (absl::Status status = formats::UpdateFromMesh(smoothed->mesh, smoothed->cell_elements, file);
+  if (absl::Status status =
+          formats::UpdateGridFromMesh(smoothed->mesh, smoothed->cell_elements, file);
       !status.ok()) {
     return status;
   }
   return WriteOutputMesh(document, output);
 }
 
-SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
-                                    Method method, const formats::VtkFile& file,
-                                    const remote::VtkWireMesh& sent,
-                                    const v1::SmoothResult& result) {
-  SmoothReport report;
+events::SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
+                                            Method method, const formats::UnstructuredGrid& file,
+                                            const remote::GridWireMesh& sent,
+                                            const v1::SmoothResult& result) {
+  events::SmoothReport report;
   report.input = input;
   report.output = output;
   report.method = method;
@@ -39,7 +43,7 @@ SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string&
   report.elements_by_type[TypeIndex(ElementType::kPyramid)] = mesh.pyramids_size() / 5;
   report.passthrough_cells =
       file.cells.size() - static_cast<std::int64_t>(sent.element_cells.size());
-  report.result = remote::FromWireResult(result);
+  report.result = wire::FromWireResult(result);
   return report;
 }
 
@@ -62,14 +66,14 @@ const char* JobStateName(v1::JobState state) {
 
 std::string JobJson(const v1::Job& job) {
   const v1::ProgressEvent& latest = job.latest_progress();
-  return JsonObject()
+  return events::JsonObject()
       .AddString("event", "job")
       .AddString("job_id", job.job_id())
       .AddString("state", JobStateName(job.state()))
-      .AddString("method", MethodName(remote::FromWireMethod(job.method())))
+      .AddString("method", MethodName(wire::MethodOrGetme(job.method())))
       .AddInt("nodes", static_cast<std::int64_t>(job.nodes()))
       .AddInt("elements", static_cast<std::int64_t>(job.elements()))
-      .AddString("phase", PhaseName(remote::FromWirePhase(latest.phase())))
+      .AddString("phase", PhaseName(wire::PhaseOrSimultaneous(latest.phase())))
       .AddInt("iteration", latest.iteration())
       .AddDouble("q_min", latest.q_min())
       .AddDouble("q_mean", latest.q_mean())
@@ -86,10 +90,10 @@ std::string FormatJobLine(const v1::Job& job) {
   const v1::ProgressEvent& latest = job.latest_progress();
   std::string line = absl::StrFormat(
       "%-20s %-9s %-13s %9d nodes %9d elements", job.job_id(), JobStateName(job.state()),
-      MethodName(remote::FromWireMethod(job.method())), job.nodes(), job.elements());
+      MethodName(wire::MethodOrGetme(job.method())), job.nodes(), job.elements());
   if (job.has_latest_progress()) {
     absl::StrAppendFormat(&line, "  %s it %d  q_min %.6f  q_mean %.6f",
-                          PhaseName(remote::FromWirePhase(latest.phase())), latest.iteration(),
+                          PhaseName(wire::PhaseOrSimultaneous(latest.phase())), latest.iteration(),
                           latest.q_min(), latest.q_mean());
   }
   if (job.result_available()) line += "  result ready";

@@ -6,11 +6,12 @@
 
 #include "absl/status/status.h"
 #include "cli/mesh_files.h"
-#include "cli/reports.h"
-#include "formats/vtk_file.h"
+#include "events/reports.h"
+#include "formats/unstructured_grid.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
-#include "remote/wire_mesh.h"
+#include "getme_wire/engine_mesh.h"
+#include "remote/grid_upload.h"
 
 namespace getme::cli {
 
@@ -22,10 +23,10 @@ absl::Status WriteSmoothedFile(std::span<const double> coordinates, const Output
                                formats::MeshDocument& document);
 
 // The report of a remote smoothing run, filled from the wire result and the sent mesh.
-SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
-                                    Method method, const formats::VtkFile& file,
-                                    const remote::VtkWireMesh& sent,
-                                    const v1::SmoothResult& result);
+events::SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
+                                            Method method, const formats::UnstructuredGrid& file,
+                                            const remote::GridWireMesh& sent,
+                                            const v1::SmoothResult& result);
 
 // "QUEUED", "RUNNING", … as the CLI prints job states.
 const char* JobStateName(v1::JobState state);

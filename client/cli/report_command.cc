@@ -17,8 +17,8 @@
 #include "cli/report_plot.h"
 #include "cli/trace_reader.h"
 #include "formats/file_io.h"
+#include "formats/grid_mesh.h"
 #include "formats/mesh_file.h"
-#include "formats/vtk_mesh.h"
 #include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
 #include "spdlog/spdlog.h"
@@ -32,7 +32,7 @@ absl::StatusOr<MeshQuality> EvaluateFile(const std::string& path,
                                          std::optional<formats::FileFormat> format, int bins) {
   absl::StatusOr<formats::MeshDocument> document = formats::ReadMeshDocument(path, format);
   if (!document.ok()) return document.status();
-  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(document->grid);
+  absl::StatusOr<formats::GridMesh> converted = formats::GridToMesh(document->grid);
   if (!converted.ok()) {
     return absl::Status(converted.status().code(),
                         absl::StrCat(path, ": ", converted.status().message()));

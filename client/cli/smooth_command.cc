@@ -1,43 +1,17 @@
 #include "cli/smooth_command.h"
 
-#include <csignal>
 #include <cstdio>
 
 #include "absl/strings/str_cat.h"
 #include "cli/failure.h"
+#include "cli/interrupt_scope.h"
 #include "cli/smooth_run.h"
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "getme/smoothing/smoother.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
 namespace {
-
-// The token SIGINT cancels. CancellationToken::Cancel is a relaxed store to a lock-free atomic,
-// which is safe in a signal handler.
-CancellationToken* interrupt_token = nullptr;
-
-extern "C" void CancelOnInterrupt(int /*signal*/) {
-  if (interrupt_token != nullptr) interrupt_token->Cancel();
-}
-
-// Routes SIGINT to `token` while in scope.
-class InterruptScope {
- public:
-  explicit InterruptScope(CancellationToken& token) {
-    interrupt_token = &token;
-    previous_ = std::signal(SIGINT, CancelOnInterrupt);
-  }
-  ~InterruptScope() {
-    std::signal(SIGINT, previous_);
-    interrupt_token = nullptr;
-  }
-  InterruptScope(const InterruptScope&) = delete;
-  InterruptScope& operator=(const InterruptScope&) = delete;
-
- private:
-  void (*previous_)(int);
-};
 
 absl::Status WithInput(const std::string& input, const absl::Status& status) {
   return absl::Status(status.code(), absl::StrCat(input, ": ", status.message()));
@@ -53,15 +27,15 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   if (absl::Status status = params.Validate(); !status.ok()) return fail(status, kExitUsage);
   absl::StatusOr<SmoothRun> run = PrepareSmoothRun(options);
   if (!run.ok()) return fail(run.status(), kExitFailure);
-  formats::VtkFile& grid = run->document.grid;
-  absl::StatusOr<formats::VtkMesh> converted = formats::ToMesh(grid);
+  formats::UnstructuredGrid& grid = run->document.grid;
+  absl::StatusOr<formats::GridMesh> converted = formats::GridToMesh(grid);
   if (!converted.ok()) return fail(WithInput(options.input, converted.status()), kExitFailure);
   Mesh& mesh = converted->mesh;
   for (std::size_t node = 0; node < run->option_fixed.size(); ++node) {
     if (run->option_fixed[node] != 0) mesh.set_fixed(static_cast<NodeId>(node), true);
   }
 
-  SmoothReport report;
+  events::SmoothReport report;
   report.input = options.input;
   report.output = options.output;
   report.method = options.method;
@@ -81,7 +55,7 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   CancellationToken cancel;
   absl::StatusOr<SmoothingResult> result;
   {
-    InterruptScope interrupt(cancel);
+    InterruptScope interrupt(&cancel);
     result = Smooth(mesh, params, progress, &cancel);
   }
   sink.Finish();
@@ -95,7 +69,7 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   }
   report.result = *std::move(result);
 
-  if (absl::Status status = formats::UpdateFromMesh(mesh, converted->cell_elements, grid);
+  if (absl::Status status = formats::UpdateGridFromMesh(mesh, converted->cell_elements, grid);
       !status.ok()) {
     return fail(status, kExitFailure);
   }

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "absl/strings/str_cat.h"
-#include "cli/json_events.h"
 #include "cli/text_reports.h"
+#include "events/json_events.h"
 
 namespace getme::cli {
 
@@ -28,14 +28,15 @@ absl::StatusOr<SmoothRun> PrepareSmoothRun(const SmoothCommandOptions& options) 
   }
   run.option_fixed = *std::move(fixed);
   if (!options.trace.empty()) {
-    absl::StatusOr<std::unique_ptr<TraceFile>> trace = TraceFile::Open(options.trace);
+    absl::StatusOr<std::unique_ptr<events::TraceFile>> trace =
+        events::TraceFile::Open(options.trace);
     if (!trace.ok()) return trace.status();
     run.trace = *std::move(trace);
   }
   return run;
 }
 
-ProgressSink::ProgressSink(const SmoothCommandOptions& options, TraceFile* trace)
+ProgressSink::ProgressSink(const SmoothCommandOptions& options, events::TraceFile* trace)
     : json_(options.json),
       quiet_(options.quiet),
       trace_(trace),
@@ -43,7 +44,7 @@ ProgressSink::ProgressSink(const SmoothCommandOptions& options, TraceFile* trace
 
 void ProgressSink::OnEvent(const ProgressEvent& event) {
   if (json_ || trace_ != nullptr) {
-    const std::string line = ProgressEventJson(event);
+    const std::string line = events::ProgressEventJson(event);
     if (trace_ != nullptr) trace_->WriteLine(line);
     if (json_) {
       std::printf("%s\n", line.c_str());
@@ -53,8 +54,8 @@ void ProgressSink::OnEvent(const ProgressEvent& event) {
   if (!json_ && !quiet_) printer_.OnEvent(event);
 }
 
-absl::Status FinishSmoothRun(const SmoothReport& report, bool json, SmoothRun& run) {
-  const std::string result_json = SmoothResultJson(report);
+absl::Status FinishSmoothRun(const events::SmoothReport& report, bool json, SmoothRun& run) {
+  const std::string result_json = events::SmoothResultJson(report);
   if (json) {
     std::printf("%s\n", result_json.c_str());
   } else {

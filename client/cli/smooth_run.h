@@ -11,8 +11,8 @@
 #include "cli/cli_options.h"
 #include "cli/mesh_files.h"
 #include "cli/progress_printer.h"
-#include "cli/reports.h"
-#include "cli/trace_file.h"
+#include "events/reports.h"
+#include "events/trace_file.h"
 #include "formats/mesh_document.h"
 #include "getme/smoothing/progress.h"
 
@@ -25,7 +25,7 @@ struct SmoothRun {
   formats::MeshDocument document;
   std::optional<OutputTarget> output;      // absent for --detach without OUT
   std::vector<std::uint8_t> option_fixed;  // --fix-physical / --fix-surfaces; empty if neither
-  std::unique_ptr<TraceFile> trace;
+  std::unique_ptr<events::TraceFile> trace;
 };
 
 // Errors name the file or option; the caller reports them with exit status 1.
@@ -35,7 +35,7 @@ absl::StatusOr<SmoothRun> PrepareSmoothRun(const SmoothCommandOptions& options);
 // --quiet), and the --trace file.
 class ProgressSink {
  public:
-  ProgressSink(const SmoothCommandOptions& options, TraceFile* trace);
+  ProgressSink(const SmoothCommandOptions& options, events::TraceFile* trace);
   void OnEvent(const ProgressEvent& event);
   // Ends a progress line left open.
   void Finish() { printer_.Finish(); }
@@ -43,11 +43,11 @@ class ProgressSink {
  private:
   bool json_;
   bool quiet_;
-  TraceFile* trace_;
+  events::TraceFile* trace_;
   ProgressPrinter printer_;
 };
 
 // Writes the report (text or JSON) to stdout and the result line to the trace; closes the trace.
-absl::Status FinishSmoothRun(const SmoothReport& report, bool json, SmoothRun& run);
+absl::Status FinishSmoothRun(const events::SmoothReport& report, bool json, SmoothRun& run);
 
 }  // namespace getme::cli

@@ -36,7 +36,7 @@ std::string FormatProgressLine(const ProgressEvent& event) {
   return line;
 }
 
-std::string FormatSmoothSummary(const SmoothReport& report) {
+std::string FormatSmoothSummary(const events::SmoothReport& report) {
   const SmoothingResult& result = report.result;
   const MeshQuality& before = result.before;
   const MeshQuality& after = result.after;
@@ -79,7 +79,7 @@ std::string FormatSmoothSummary(const SmoothReport& report) {
   return out;
 }
 
-std::string FormatQualityReport(const QualityReport& report) {
+std::string FormatQualityReport(const events::QualityReport& report) {
   const MeshQuality& quality = report.quality;
   std::array<std::int64_t, kElementTypeCount> counts{};
   for (const ElementType type : kAllElementTypes) {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "cli/reports.h"
+#include "events/reports.h"
 #include "getme/smoothing/progress.h"
 
 namespace getme::cli {
@@ -14,10 +14,10 @@ std::string FormatProgressLine(const ProgressEvent& event);
 
 // The before/after table of `getme smooth`: nodes, elements per type, q_min, q_mean, invalid,
 // warpage, then iterations and seconds per phase, total seconds and threads.
-std::string FormatSmoothSummary(const SmoothReport& report);
+std::string FormatSmoothSummary(const events::SmoothReport& report);
 
 // The report of `getme quality`: counts, q_min/q_mean per type and overall, invalid elements,
 // warpage, histogram.
-std::string FormatQualityReport(const QualityReport& report);
+std::string FormatQualityReport(const events::QualityReport& report);
 
 }  // namespace getme::cli

@@ -4,7 +4,7 @@
 
 #include "formats/gmsh/gmsh_extras.h"
 #include "formats/medit/medit_extras.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats {
 
@@ -25,7 +25,7 @@ enum class VtuLayout { kInline, kAppended };
 // How to write a document. Each format uses the fields that apply to it; a format without a
 // binary variant (MEDIT .mesh) rejects kBinary with InvalidArgument.
 struct WriteOptions {
-  VtkEncoding encoding = VtkEncoding::kAscii;
+  Encoding encoding = Encoding::kAscii;
   GmshVersion gmsh_version = GmshVersion::k41;
   VtuLayout vtu_layout = VtuLayout::kAppended;
   bool vtu_compress = false;  // zlib-compressed blocks (vtkZLibDataCompressor)
@@ -38,7 +38,7 @@ struct WriteOptions {
 // - points: 3 components, in the file's node order (node i of the file = point i);
 // - cells: every element of the file of any dimension (volumes, surfaces, lines, vertices), in
 //   file order, as VTK cell type codes with VTK's node order. In particular the linear wedge is
-//   in VTK's order, mirrored against Gmsh's and MEDIT's prism (NOTES.md §1);
+//   in VTK's order, mirrored against Gmsh's and MEDIT's prism (docs/node-orders.md);
 // - point_data / cell_data / field_data: named numeric arrays. Readers store format tags under
 //   meshio's names so the conventions meet: "gmsh:physical" and "gmsh:geometrical" (cell data,
 //   Int32), "medit:ref" (point and cell data, Int32). A point array named "fixed" (nonzero =
@@ -51,7 +51,7 @@ struct WriteOptions {
 struct MeshDocument {
   FileFormat format = FileFormat::kVtkLegacy;
   WriteOptions as_read;  // the input's encoding / version / layout: the default when writing back
-  VtkFile grid;
+  UnstructuredGrid grid;
   std::optional<GmshExtras> gmsh;
   std::optional<MeditExtras> medit;
 };

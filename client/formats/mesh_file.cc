@@ -64,10 +64,10 @@ std::optional<std::int64_t> GroupNumber(absl::string_view group) {
 }
 
 // Cells whose integer cell array `name` equals `value`.
-std::vector<std::int64_t> CellsWithTag(const VtkFile& grid, absl::string_view name,
+std::vector<std::int64_t> CellsWithTag(const UnstructuredGrid& grid, absl::string_view name,
                                        std::int64_t value) {
   std::vector<std::int64_t> cells;
-  const VtkDataArray* tags = FindArray(grid.cell_data, name);
+  const DataArray* tags = FindArray(grid.cell_data, name);
   if (tags == nullptr || tags->components != 1 || tags->tuple_count() != grid.cells.size()) {
     return cells;
   }
@@ -136,7 +136,7 @@ std::optional<FileFormat> SniffFormat(absl::string_view bytes) {
 absl::StatusOr<MeshDocument> ParseMeshDocument(absl::string_view bytes, FileFormat format) {
   switch (format) {
     case FileFormat::kVtkLegacy: {
-      absl::StatusOr<VtkFile> file = ParseVtk(bytes);
+      absl::StatusOr<UnstructuredGrid> file = ParseVtk(bytes);
       if (!file.ok()) return file.status();
       MeshDocument document;
       document.format = FileFormat::kVtkLegacy;
@@ -224,7 +224,7 @@ WriteOptions DefaultWriteOptions(const MeshDocument& document, FileFormat format
   if (format == document.format) return document.as_read;
   WriteOptions options;
   options.encoding = document.as_read.encoding;
-  if (format == FileFormat::kMedit) options.encoding = VtkEncoding::kAscii;
+  if (format == FileFormat::kMedit) options.encoding = Encoding::kAscii;
   return options;
 }
 
@@ -258,7 +258,7 @@ absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& documen
 absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& document,
                                                            const std::vector<std::string>& groups,
                                                            bool surface_cells) {
-  const VtkCells& cells = document.grid.cells;
+  const GridCells& cells = document.grid.cells;
   std::vector<std::uint8_t> fixed(static_cast<std::size_t>(document.grid.point_count()), 0);
   const auto fix_cell = [&](std::int64_t cell) {
     const std::int64_t* nodes = cells.nodes(cell);

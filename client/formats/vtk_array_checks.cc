@@ -7,7 +7,7 @@
 
 namespace getme::formats {
 
-absl::Status CheckArrayForWriting(const VtkDataArray& array, std::int64_t tuples,
+absl::Status CheckArrayForWriting(const DataArray& array, std::int64_t tuples,
                                   absl::string_view what) {
   if (array.components < 1) {
     return absl::InvalidArgumentError(
@@ -40,7 +40,7 @@ absl::Status CheckArrayForWriting(const VtkDataArray& array, std::int64_t tuples
   return absl::OkStatus();
 }
 
-VtkDataType TypeKeepingEveryValue(const VtkDataArray& array) {
+VtkDataType TypeKeepingEveryValue(const DataArray& array) {
   if (array.type != VtkDataType::kFloat) return array.type;
   for (const double value : array.reals) {
     if (std::isnan(value)) continue;

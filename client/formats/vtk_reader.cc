@@ -16,6 +16,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "formats/file_io.h"
+#include "formats/quote.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_scanner.h"
 #include "formats/vtk_values.h"
@@ -46,12 +47,6 @@ std::string DecodeName(absl::string_view encoded) {
   return name;
 }
 
-std::string Quote(absl::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  if (text.size() > kMaxShown) return absl::StrCat("'", text.substr(0, kMaxShown), "…'");
-  return absl::StrCat("'", text, "'");
-}
-
 bool LooksLikeKeyword(absl::string_view token) {
   return !token.empty() && absl::ascii_isalpha(static_cast<unsigned char>(token.front())) &&
          absl::ascii_isupper(static_cast<unsigned char>(token.front()));
@@ -72,7 +67,7 @@ class Parser {
  public:
   explicit Parser(absl::string_view bytes) : scanner_(bytes) {}
 
-  absl::StatusOr<VtkFile> Parse() {
+  absl::StatusOr<UnstructuredGrid> Parse() {
     if (absl::Status status = ParseHeader(); !status.ok()) return status;
     if (absl::Status status = ParseSections(); !status.ok()) return status;
     if (absl::Status status = Finish(); !status.ok()) return status;
@@ -120,9 +115,9 @@ class Parser {
     const std::vector<absl::string_view> format = scanner_.ReadKeywordLine();
     if (format.empty()) return Error(scanner_.here(), "the file ends before 'ASCII' or 'BINARY'");
     if (format.size() == 1 && absl::EqualsIgnoreCase(format[0], "ASCII")) {
-      file_.encoding = VtkEncoding::kAscii;
+      file_.encoding = Encoding::kAscii;
     } else if (format.size() == 1 && absl::EqualsIgnoreCase(format[0], "BINARY")) {
-      file_.encoding = VtkEncoding::kBinary;
+      file_.encoding = Encoding::kBinary;
     } else {
       return Error(scanner_.location(), absl::StrCat("expected 'ASCII' or 'BINARY', found ",
                                                      Quote(absl::StrJoin(format, " "))));
@@ -141,7 +136,7 @@ class Parser {
                    absl::StrCat("DATASET ", dataset[1],
                                 " is not supported; getme reads DATASET UNSTRUCTURED_GRID"));
     }
-    scanner_.set_binary(file_.encoding == VtkEncoding::kBinary);
+    scanner_.set_binary(file_.encoding == Encoding::kBinary);
     return absl::OkStatus();
   }
 
@@ -335,7 +330,7 @@ class Parser {
   }
 
   // Reads `count` values of array.type into the array.
-  absl::Status ReadValues(VtkDataArray& array, std::int64_t count, absl::string_view what,
+  absl::Status ReadValues(DataArray& array, std::int64_t count, absl::string_view what,
                           VtkLocation header) {
     const VtkDataTypeInfo& info = DataTypeInfo(array.type);
     if (absl::Status status = CheckRoom(count, info.binary_size, what, header); !status.ok()) {
@@ -361,7 +356,7 @@ class Parser {
   }
 
   // bit arrays: 0/1 tokens in ASCII, packed eight to a byte (most significant first) in BINARY.
-  absl::Status ReadBits(VtkDataArray& array, std::int64_t count, absl::string_view what) {
+  absl::Status ReadBits(DataArray& array, std::int64_t count, absl::string_view what) {
     array.integers.reserve(count);
     if (scanner_.binary()) {
       const std::optional<absl::string_view> bytes = scanner_.TakeBytes((count + 7) / 8);
@@ -386,7 +381,7 @@ class Parser {
 
   // COLOR_SCALARS and LOOKUP_TABLE values: floats in [0, 1] in ASCII, unsigned bytes in BINARY
   // (stored as byte / 255).
-  absl::Status ReadColorValues(VtkDataArray& array, std::int64_t count, absl::string_view what,
+  absl::Status ReadColorValues(DataArray& array, std::int64_t count, absl::string_view what,
                                VtkLocation header) {
     array.type = VtkDataType::kFloat;
     if (!scanner_.binary()) return ReadValues(array, count, what, header);
@@ -438,7 +433,7 @@ class Parser {
                                 *size, " (each cell needs at least its node count)"));
     }
     if (absl::Status status = CheckRoom(*size, 4, "CELLS", where); !status.ok()) return status;
-    VtkCells& cells = file_.cells;
+    GridCells& cells = file_.cells;
     cells.offsets.reserve(*cell_count + 1);
     cells.connectivity.reserve(*size - *cell_count);
     cell_locations_.reserve(*cell_count);
@@ -484,17 +479,17 @@ class Parser {
     absl::StatusOr<std::int64_t> connectivity_size = ParseCount(words[2], "CELLS", where);
     if (!connectivity_size.ok()) return connectivity_size.status();
 
-    VtkDataArray offsets;
+    DataArray offsets;
     if (absl::Status status = ReadCellArray("OFFSETS", *offset_count, offsets); !status.ok()) {
       return status;
     }
     const VtkLocation offsets_location = offset_array_location_;
-    VtkDataArray connectivity;
+    DataArray connectivity;
     if (absl::Status status = ReadCellArray("CONNECTIVITY", *connectivity_size, connectivity);
         !status.ok()) {
       return status;
     }
-    VtkCells& cells = file_.cells;
+    GridCells& cells = file_.cells;
     if (*offset_count == 0) {
       if (*connectivity_size != 0) {
         return Error(where, "CELLS: no offsets but a non-empty CONNECTIVITY array");
@@ -536,7 +531,7 @@ class Parser {
     return absl::OkStatus();
   }
 
-  absl::Status ReadCellArray(absl::string_view keyword, std::int64_t count, VtkDataArray& array) {
+  absl::Status ReadCellArray(absl::string_view keyword, std::int64_t count, DataArray& array) {
     const std::vector<absl::string_view> words = scanner_.ReadKeywordLine();
     const VtkLocation where = words.empty() ? scanner_.here() : scanner_.location();
     if (words.size() != 2 || !absl::EqualsIgnoreCase(words[0], keyword)) {
@@ -589,7 +584,7 @@ class Parser {
         absl::StrCat(keyword, words.size() > 1 ? " " : "", words.size() > 1 ? words[1] : "");
     VtkAttribute attribute;
     attribute.arrays.emplace_back();
-    VtkDataArray& array = attribute.arrays.back();
+    DataArray& array = attribute.arrays.back();
     if (words.size() > 1) array.name = DecodeName(words[1]);
     attribute.name = array.name;
 
@@ -702,7 +697,7 @@ class Parser {
   // Reads the values of a one-array attribute and appends it.
   absl::Status FinishAttribute(VtkAttribute attribute, std::int64_t tuples, VtkLocation where,
                                absl::string_view section, std::vector<VtkAttribute>& attributes) {
-    VtkDataArray& array = attribute.arrays.back();
+    DataArray& array = attribute.arrays.back();
     if (tuples > std::numeric_limits<std::int64_t>::max() / array.components) {
       return Error(where, absl::StrCat(section, ": too many values"));
     }
@@ -744,7 +739,7 @@ class Parser {
                                          " of FIELD ", field.name, ")"),
                             header);
       }
-      VtkDataArray array;
+      DataArray array;
       array.name = DecodeName(header[0]);
       const std::string array_section = absl::StrCat("FIELD ", field.name, " array ", array.name);
       absl::StatusOr<int> components = ParseComponents(header[1], array_section, header_location);
@@ -790,7 +785,7 @@ class Parser {
                    absl::StrCat("CELL_TYPES lists ", cell_types_count_, " cells, but CELLS at ",
                                 cells_location_->ToString(), " lists ", cell_count_));
     }
-    const VtkCells& cells = file_.cells;
+    const GridCells& cells = file_.cells;
     for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
       const VtkLocation where{scanner_.binary(), cell_locations_[cell]};
       const VtkCellTypeInfo info = *CellTypeInfo(cells.types[cell]);
@@ -815,7 +810,7 @@ class Parser {
   }
 
   VtkScanner scanner_;
-  VtkFile file_;
+  UnstructuredGrid file_;
   std::optional<VtkLocation> points_location_;
   std::optional<VtkLocation> cells_location_;
   std::optional<VtkLocation> cell_types_location_;
@@ -830,12 +825,12 @@ class Parser {
 
 }  // namespace
 
-absl::StatusOr<VtkFile> ParseVtk(absl::string_view bytes) { return Parser(bytes).Parse(); }
+absl::StatusOr<UnstructuredGrid> ParseVtk(absl::string_view bytes) { return Parser(bytes).Parse(); }
 
-absl::StatusOr<VtkFile> ReadVtkFile(const std::string& path) {
+absl::StatusOr<UnstructuredGrid> ReadVtkFile(const std::string& path) {
   absl::StatusOr<std::string> contents = ReadFileBytes(path);
   if (!contents.ok()) return contents.status();
-  absl::StatusOr<VtkFile> file = ParseVtk(*contents);
+  absl::StatusOr<UnstructuredGrid> file = ParseVtk(*contents);
   if (!file.ok()) {
     return absl::Status(file.status().code(), absl::StrCat(path, ": ", file.status().message()));
   }

@@ -4,7 +4,7 @@
 
 #include "absl/status/statusor.h"
 #include "absl/strings/string_view.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats {
 
@@ -18,10 +18,10 @@ namespace getme::formats {
 // declared type, node ids against the point count, the node count of every fixed-size cell
 // type, and that POINT_DATA / CELL_DATA sizes match the points and cells. Not kept: METADATA
 // blocks (VTK 9 writes component names there), which are skipped.
-absl::StatusOr<VtkFile> ParseVtk(absl::string_view bytes);
+absl::StatusOr<UnstructuredGrid> ParseVtk(absl::string_view bytes);
 
 // Reads and parses `path`. NotFound / PermissionDenied etc. name the path; parse errors are
 // prefixed with it.
-absl::StatusOr<VtkFile> ReadVtkFile(const std::string& path);
+absl::StatusOr<UnstructuredGrid> ReadVtkFile(const std::string& path);
 
 }  // namespace getme::formats

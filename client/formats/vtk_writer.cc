@@ -40,8 +40,8 @@ bool IsColorKind(VtkAttributeKind kind) {
 
 class Writer {
  public:
-  Writer(const VtkFile& file, VtkEncoding encoding)
-      : file_(file), binary_(encoding == VtkEncoding::kBinary) {}
+  Writer(const UnstructuredGrid& file, Encoding encoding)
+      : file_(file), binary_(encoding == Encoding::kBinary) {}
 
   absl::StatusOr<std::string> Write() {
     if (file_.title.find_first_of("\r\n") != std::string::npos) {
@@ -80,7 +80,7 @@ class Writer {
 
  private:
   absl::Status WritePoints() {
-    const VtkDataArray& points = file_.points;
+    const DataArray& points = file_.points;
     if (points.components != 3 || points.type == VtkDataType::kBit) {
       return absl::InvalidArgumentError("POINTS: expected 3 components of a numeric type");
     }
@@ -93,7 +93,7 @@ class Writer {
   }
 
   absl::Status CheckCells() const {
-    const VtkCells& cells = file_.cells;
+    const GridCells& cells = file_.cells;
     if (cells.offsets.size() != cells.types.size() + 1 || cells.offsets.front() != 0 ||
         cells.offsets.back() != static_cast<std::int64_t>(cells.connectivity.size())) {
       return absl::InvalidArgumentError(
@@ -124,7 +124,7 @@ class Writer {
 
   absl::Status WriteCells() {
     if (absl::Status status = CheckCells(); !status.ok()) return status;
-    const VtkCells& cells = file_.cells;
+    const GridCells& cells = file_.cells;
     if (cells.size() == 0) return absl::OkStatus();
     if (file_.uses_offsets_layout()) {
       absl::StrAppend(&out_, "CELLS ", cells.offsets.size(), " ", cells.connectivity.size(),
@@ -193,7 +193,7 @@ class Writer {
       }
       absl::StrAppend(&out_, "FIELD ", EncodeName(attribute.name), " ", attribute.arrays.size(),
                       "\n");
-      for (const VtkDataArray& array : attribute.arrays) {
+      for (const DataArray& array : attribute.arrays) {
         const std::string array_what = absl::StrCat(what, " array ", array.name);
         if (absl::Status status = CheckAttributeArray(array, tuples, array_what); !status.ok()) {
           return status;
@@ -209,7 +209,7 @@ class Writer {
       return absl::InvalidArgumentError(
           absl::StrCat(what, ": holds ", attribute.arrays.size(), " arrays; expected 1"));
     }
-    const VtkDataArray& array = attribute.arrays.front();
+    const DataArray& array = attribute.arrays.front();
     const bool lookup_table = attribute.kind == VtkAttributeKind::kLookupTable;
     if (absl::Status status = CheckAttributeArray(array, lookup_table ? -1 : tuples, what);
         !status.ok()) {
@@ -266,7 +266,7 @@ class Writer {
     return absl::OkStatus();
   }
 
-  absl::Status CheckAttributeArray(const VtkDataArray& array, std::int64_t tuples,
+  absl::Status CheckAttributeArray(const DataArray& array, std::int64_t tuples,
                                    absl::string_view what) const {
     if (array.name.empty()) return absl::InvalidArgumentError(absl::StrCat(what, ": no name"));
     if (absl::Status status = CheckArrayForWriting(array, -1, what); !status.ok()) return status;
@@ -277,7 +277,7 @@ class Writer {
     return absl::OkStatus();
   }
 
-  void AppendValues(const VtkDataArray& array, VtkDataType type) {
+  void AppendValues(const DataArray& array, VtkDataType type) {
     if (IsIntegerType(type)) {
       if (type == VtkDataType::kBit && binary_) {
         AppendBits(array.integers);
@@ -323,7 +323,7 @@ class Writer {
     out_.push_back('\n');
   }
 
-  void AppendColors(const VtkDataArray& array) {
+  void AppendColors(const DataArray& array) {
     if (!binary_) {
       AppendValues(array, VtkDataType::kDouble);
       return;
@@ -335,18 +335,19 @@ class Writer {
     out_.push_back('\n');
   }
 
-  const VtkFile& file_;
+  const UnstructuredGrid& file_;
   const bool binary_;
   std::string out_;
 };
 
 }  // namespace
 
-absl::StatusOr<std::string> SerializeVtk(const VtkFile& file, VtkEncoding encoding) {
+absl::StatusOr<std::string> SerializeVtk(const UnstructuredGrid& file, Encoding encoding) {
   return Writer(file, encoding).Write();
 }
 
-absl::Status WriteVtkFile(const std::string& path, const VtkFile& file, VtkEncoding encoding) {
+absl::Status WriteVtkFile(const std::string& path, const UnstructuredGrid& file,
+                          Encoding encoding) {
   absl::StatusOr<std::string> bytes = SerializeVtk(file, encoding);
   if (!bytes.ok()) {
     return absl::Status(bytes.status().code(),

@@ -4,7 +4,7 @@
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats {
 
@@ -22,11 +22,11 @@ namespace getme::formats {
 //
 // Fails with InvalidArgument if the model is inconsistent: wrong array lengths, node ids out of
 // range, integers outside their type, a title with a line break, an unnamed array.
-absl::StatusOr<std::string> SerializeVtk(const VtkFile& file, VtkEncoding encoding);
+absl::StatusOr<std::string> SerializeVtk(const UnstructuredGrid& file, Encoding encoding);
 
 // Writes atomically: to a temporary file beside `path`, renamed over it once complete.
-absl::Status WriteVtkFile(const std::string& path, const VtkFile& file, VtkEncoding encoding);
-inline absl::Status WriteVtkFile(const std::string& path, const VtkFile& file) {
+absl::Status WriteVtkFile(const std::string& path, const UnstructuredGrid& file, Encoding encoding);
+inline absl::Status WriteVtkFile(const std::string& path, const UnstructuredGrid& file) {
   return WriteVtkFile(path, file, file.encoding);
 }
 

@@ -6,7 +6,7 @@
 
 #include "absl/time/time.h"
 #include "getme/v1/smoother.pb.h"
-#include "remote/mesh_chunks.h"
+#include "getme_wire/mesh_chunker.h"
 
 namespace getme::remote {
 
@@ -32,7 +32,7 @@ struct CallOptions {
   // flag, so a signal handler may set it.
   const std::atomic<bool>* cancel = nullptr;
   // Upload chunk size (MeshChunk messages).
-  std::size_t chunk_bytes = kDefaultChunkBytes;
+  std::size_t chunk_bytes = wire::kDefaultChunkBytes;
   RetryPolicy retry;
 };
 

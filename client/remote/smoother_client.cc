@@ -4,12 +4,14 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "getme_wire/mesh_assembler.h"
+#include "getme_wire/mesh_chunker.h"
+#include "getme_wire/mesh_fields.h"
+#include "getme_wire/status.h"
 #include "grpcpp/create_channel.h"
 #include "grpcpp/security/credentials.h"
 #include "remote/cancel_watcher.h"
-#include "remote/mesh_chunks.h"
 #include "remote/retry.h"
-#include "remote/status_conversion.h"
 
 namespace getme::remote {
 namespace {
@@ -24,7 +26,7 @@ v1::SmoothRequest HeaderRequest(const v1::Mesh& mesh, const SmoothJobOptions& jo
   v1::SmoothHeader& header = *request.mutable_header();
   *header.mutable_parameters() = job.parameters;
   *header.mutable_result_options() = job.result_options;
-  *header.mutable_expected_size() = SizeOf(mesh);
+  *header.mutable_expected_size() = wire::SizeOf(mesh);
   return request;
 }
 
@@ -33,7 +35,7 @@ v1::SmoothRequest HeaderRequest(const v1::Mesh& mesh, const SmoothJobOptions& jo
 template <typename Writer, typename Request>
 bool Upload(Writer& writer, Request header, const v1::Mesh& mesh, std::size_t chunk_bytes) {
   if (!writer.Write(header)) return false;
-  MeshChunker chunker(mesh, chunk_bytes);
+  wire::MeshChunker chunker(mesh, chunk_bytes);
   Request request;
   while (chunker.Next(*request.mutable_chunk())) {
     if (!writer.Write(request)) return false;
@@ -63,8 +65,7 @@ class ResultReader {
         if (!have_result_) {
           return absl::InternalError("the server sent mesh chunks before the result");
         }
-        assembler_.Add(response.chunk());
-        return absl::OkStatus();
+        return assembler_.Add(response.chunk());
       case v1::SmoothResponse::KIND_NOT_SET:
         break;
     }
@@ -86,7 +87,7 @@ class ResultReader {
   const ProgressHandler& on_progress_;
   bool have_result_ = false;
   RemoteSmoothResult result_;
-  MeshAssembler assembler_;
+  wire::MeshAssembler assembler_;
 };
 
 // Drains a SmoothResponse stream into a result. A protocol violation cancels the call. Once a
@@ -108,7 +109,7 @@ absl::StatusOr<RemoteSmoothResult> ReadResult(Stream& stream, grpc::ClientContex
       break;
     }
   }
-  const absl::Status status = FromGrpcStatus(stream.Finish());
+  const absl::Status status = wire::FromGrpcStatus(stream.Finish());
   if (!protocol.ok()) return protocol;
   if (!status.ok()) return status;
   return std::move(reader).Take();
@@ -159,7 +160,7 @@ absl::StatusOr<v1::Job> SmootherClient::SubmitJob(const v1::Mesh& mesh, const Sm
         stub_->SubmitJob(&context, &submitted);
     // Sent whole, the upload may have become a queued job even if the reply is lost.
     attempt.retry_safe = !Upload(*writer, HeaderRequest(mesh, job), mesh, call.chunk_bytes);
-    if (absl::Status status = FromGrpcStatus(writer->Finish()); !status.ok()) return status;
+    if (absl::Status status = wire::FromGrpcStatus(writer->Finish()); !status.ok()) return status;
     return submitted;
   });
 }
@@ -179,7 +180,7 @@ absl::Status SmootherClient::WatchJob(const std::string& job_id, const ProgressH
       attempt.retry_safe = false;  // a retry would repeat events
       if (on_progress) on_progress(event);
     }
-    absl::Status status = FromGrpcStatus(reader->Finish());
+    absl::Status status = wire::FromGrpcStatus(reader->Finish());
     if (!status.ok() && watcher.fired()) {
       return absl::CancelledError(absl::StrCat("watching job ", job_id, " stopped by the client"));
     }
@@ -194,7 +195,7 @@ absl::StatusOr<v1::Job> SmootherClient::GetJob(const std::string& job_id, const 
     v1::GetJobRequest request;
     request.set_job_id(job_id);
     v1::Job job;
-    if (absl::Status status = FromGrpcStatus(stub_->GetJob(&context, request, &job));
+    if (absl::Status status = wire::FromGrpcStatus(stub_->GetJob(&context, request, &job));
         !status.ok()) {
       return status;
     }
@@ -211,7 +212,7 @@ absl::StatusOr<v1::Job> SmootherClient::CancelJob(const std::string& job_id,
     v1::CancelJobRequest request;
     request.set_job_id(job_id);
     v1::Job job;
-    if (absl::Status status = FromGrpcStatus(stub_->CancelJob(&context, request, &job));
+    if (absl::Status status = wire::FromGrpcStatus(stub_->CancelJob(&context, request, &job));
         !status.ok()) {
       return status;
     }
@@ -225,7 +226,7 @@ absl::StatusOr<std::vector<v1::Job>> SmootherClient::ListJobs(const CallOptions&
     ApplyDeadline(attempt, context);
     v1::ListJobsResponse response;
     if (absl::Status status =
-            FromGrpcStatus(stub_->ListJobs(&context, v1::ListJobsRequest(), &response));
+            wire::FromGrpcStatus(stub_->ListJobs(&context, v1::ListJobsRequest(), &response));
         !status.ok()) {
       return status;
     }
@@ -260,9 +261,9 @@ absl::StatusOr<v1::QualityReport> SmootherClient::EvaluateQuality(const v1::Mesh
         stub_->EvaluateQuality(&context, &report);
     v1::EvaluateQualityRequest header;
     header.mutable_header()->set_histogram_bins(histogram_bins);
-    *header.mutable_header()->mutable_expected_size() = SizeOf(mesh);
+    *header.mutable_header()->mutable_expected_size() = wire::SizeOf(mesh);
     Upload(*writer, std::move(header), mesh, call.chunk_bytes);
-    if (absl::Status status = FromGrpcStatus(writer->Finish()); !status.ok()) return status;
+    if (absl::Status status = wire::FromGrpcStatus(writer->Finish()); !status.ok()) return status;
     return report;
   });
 }

@@ -3,15 +3,10 @@
 #include <utility>
 
 #include "absl/strings/str_cat.h"
-#include "absl/strings/str_join.h"
 #include "absl/time/clock.h"
-#include "getme/mesh/mesh_quality.h"
 #include "getme/smoothing/smoother.h"
-#include "getme/parallel/thread_pool.h"
-#include "getme_server/mesh_conversion.h"
-#include "getme_server/params_conversion.h"
-#include "getme_server/report_conversion.h"
 #include "getme_wire/enums.h"
+#include "getme_wire/progress.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::server {
@@ -27,20 +22,20 @@ const char* StateName(v1::JobState state) {
 
 }  // namespace
 
-Job::Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
+Job::Job(std::string id, wire::UploadedMesh mesh, std::int64_t upload_bytes, SmoothingParams params,
          v1::ResultOptions options, absl::Duration progress_interval, ServerMetrics* metrics)
     : id_(std::move(id)),
-      upload_bytes_(static_cast<std::int64_t>(topology.ByteSizeLong())),
+      upload_bytes_(upload_bytes),
       params_(params),
-      nodes_(static_cast<std::uint64_t>(mesh.node_count())),
-      elements_(static_cast<std::uint64_t>(mesh.element_count())),
+      nodes_(static_cast<std::uint64_t>(mesh.mesh.node_count())),
+      elements_(static_cast<std::uint64_t>(mesh.mesh.element_count())),
       created_(absl::Now()),
       metrics_(metrics),
       fanout_(progress_interval),
+      trace_(elements_),
       result_(std::make_unique<JobResult>()) {
-  topology.clear_coordinates();  // the smoothed mesh replaces them
-  result_->mesh = std::move(mesh);
-  result_->topology = std::move(topology);
+  result_->mesh = std::move(mesh.mesh);
+  result_->ids = std::move(mesh.ids);
   result_->options = std::move(options);
 }
 
@@ -48,9 +43,10 @@ void Job::Publish(v1::ProgressEvent event) {
   std::lock_guard lock(mutex_);
   event.set_job_id(id_);
   event.set_sequence(++sequence_);
-  if (!event.final()) CountElementIterationsLocked(event);
-  latest_ = event;
-  RecordTraceLocked(event);
+  const std::uint64_t element_iterations = trace_.Record(event);
+  if (metrics_ != nullptr && element_iterations > 0) {
+    metrics_->AddElementIterations(element_iterations);
+  }
   fanout_.Publish(event);
 }
 
@@ -67,62 +63,23 @@ void Job::Run(absl::Time start) {
                elements_, MethodName(params_.method), params_.threads);
 
   // Only the worker touches `work` until the job is final (cancellation uses the token).
-  const int bins = work->options.histogram_bins() == 0
-                       ? QualityOptions{}.histogram_bins
-                       : static_cast<int>(work->options.histogram_bins());
-  std::optional<MeshQuality> custom_before;
-  std::unique_ptr<ThreadPool> pool;
-  if (bins != QualityOptions{}.histogram_bins) {
-    pool = std::make_unique<ThreadPool>(params_.threads);
-    custom_before = EvaluateMeshQuality(work->mesh, *pool, {.histogram_bins = bins});
-  }
-  absl::StatusOr<SmoothingResult> result = Smooth(
-      work->mesh, params_, [this](const ProgressEvent& event) { Publish(ToWireEvent(event)); },
+  absl::Status outcome = RunSmoothing(
+      *work, params_, [this](const ProgressEvent& event) { Publish(wire::ToWireEvent(event)); },
       &cancel_);
 
   v1::ProgressEvent final_event;
   {
     std::lock_guard lock(mutex_);
-    if (latest_.has_value()) {
-      final_event = *latest_;
+    if (trace_.latest().has_value()) {
+      final_event = *trace_.latest();
       final_event.set_phase_done(false);
     }
   }
-  if (result.ok()) {
-    v1::SmoothResult& summary = work->summary;
-    summary.set_job_id(id_);
-    const MeshQuality after =
-        pool ? EvaluateMeshQuality(work->mesh, *pool, {.histogram_bins = bins}) : result->after;
-    *summary.mutable_before() =
-        ToWireReport(custom_before ? *custom_before : result->before, work->topology);
-    *summary.mutable_after() = ToWireReport(after, work->topology);
-    for (const PhaseSummary& phase : result->phases) {
-      *summary.add_phases() = ToWirePhaseSummary(phase);
-    }
-    summary.set_iterations_untangle(result->iterations_untangle);
-    summary.set_iterations_simultaneous(result->iterations_simultaneous);
-    summary.set_iterations_sequential(result->iterations_sequential);
-    summary.set_iterations_laplace(result->iterations_laplace);
-    summary.set_seconds(result->seconds);
-    summary.set_threads(result->threads);
-    summary.set_coordinates_only(work->options.coordinates_only());
-    summary.set_nodes(nodes_);
-    final_event.set_q_min(after.q_min);
-    final_event.set_q_mean(after.q_mean);
-    final_event.set_invalid_elements(after.invalid);
-  }
-
-  absl::Status outcome = result.status();
-  if (outcome.code() == absl::StatusCode::kFailedPrecondition &&
-      work->topology.element_ids_size() > 0) {
-    // The engine names elements by number; callers who sent ids get theirs too.
-    ThreadPool ids_pool(1);
-    std::vector<std::string> ids;
-    for (ElementId e : EvaluateMeshQuality(work->mesh, ids_pool).first_invalid) {
-      ids.push_back(absl::StrCat(WireElementId(work->topology, e)));
-    }
-    outcome = absl::FailedPreconditionError(
-        absl::StrCat(outcome.message(), " (as Mesh.element_ids: ", absl::StrJoin(ids, ", "), ")"));
+  if (outcome.ok()) {
+    work->summary.set_job_id(id_);
+    final_event.set_q_min(work->summary.after().q_min());
+    final_event.set_q_mean(work->summary.after().q_mean());
+    final_event.set_invalid_elements(work->summary.after().invalid_elements());
   }
   double seconds = 0;
   {
@@ -147,18 +104,6 @@ void Job::Run(absl::Time start) {
   spdlog::info("job={} phase=done nodes={} elements={} method={} seconds={:.3f} outcome={}{}{}",
                id_, nodes_, elements_, MethodName(params_.method), seconds, StateName(state()),
                outcome.ok() ? "" : " error=", outcome.ok() ? "" : std::string(outcome.message()));
-}
-
-void Job::CountElementIterationsLocked(const v1::ProgressEvent& event) {
-  const bool same_phase = latest_.has_value() && latest_->phase() == event.phase() &&
-                          !latest_->phase_done() && !latest_->final();
-  const std::int64_t before = same_phase ? latest_->iteration() : 0;
-  if (event.iteration() <= before) return;
-  const bool picks = event.phase() == v1::PHASE_SEQUENTIAL || event.phase() == v1::PHASE_WARPAGE;
-  const std::uint64_t count =
-      static_cast<std::uint64_t>(event.iteration() - before) * (picks ? 1 : elements_);
-  element_iterations_ += count;
-  if (metrics_ != nullptr) metrics_->AddElementIterations(count);
 }
 
 void Job::FinishLocked(absl::Status outcome) {
@@ -230,21 +175,9 @@ absl::Status Job::outcome() const {
   return outcome_;
 }
 
-void Job::RecordTraceLocked(const v1::ProgressEvent& event) {
-  const bool must_keep = event.phase_done() || event.final();
-  if (!must_keep && event.sequence() % trace_stride_ != 0) return;
-  trace_.push_back(event);
-  if (trace_.size() < kMaxTrace) return;
-  // Full: keep every other intermediate event from now on, and thin the past to match.
-  trace_stride_ *= 2;
-  std::erase_if(trace_, [this](const v1::ProgressEvent& e) {
-    return !e.phase_done() && !e.final() && e.sequence() % trace_stride_ != 0;
-  });
-}
-
 std::vector<v1::ProgressEvent> Job::Trace() const {
   std::lock_guard lock(mutex_);
-  return trace_;
+  return trace_.events();
 }
 
 std::optional<v1::SmoothResult> Job::Summary() const {
@@ -256,7 +189,7 @@ double Job::ElementIterationRate() const {
   std::lock_guard lock(mutex_);
   if (state_ != v1::JOB_STATE_RUNNING) return 0.0;
   const double seconds = absl::ToDoubleSeconds(absl::Now() - started_);
-  return seconds > 0 ? static_cast<double>(element_iterations_) / seconds : 0.0;
+  return seconds > 0 ? static_cast<double>(trace_.element_iterations()) / seconds : 0.0;
 }
 
 v1::Job Job::Describe() const {
@@ -270,7 +203,7 @@ v1::Job Job::Describe() const {
   job.set_created_unix_seconds(UnixSeconds(created_));
   job.set_started_unix_seconds(UnixSeconds(started_));
   job.set_finished_unix_seconds(UnixSeconds(finished_));
-  if (latest_.has_value()) *job.mutable_latest_progress() = *latest_;
+  if (trace_.latest().has_value()) *job.mutable_latest_progress() = *trace_.latest();
   if (!outcome_.ok()) {
     job.set_error_code(static_cast<int>(outcome_.code()));
     job.set_error_message(std::string(outcome_.message()));

@@ -10,31 +10,25 @@
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
 #include "absl/time/time.h"
-#include "getme/mesh/mesh.h"
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_server/job_run.h"
+#include "getme_server/job_trace.h"
 #include "getme_server/progress_fanout.h"
 #include "getme_server/server_metrics.h"
+#include "getme_wire/mesh_upload.h"
 
 namespace getme::server {
 
-// What a finished job hands out once: the summary and the smoothed mesh with the caller's wire
-// topology (for results that carry it).
-struct JobResult {
-  v1::SmoothResult summary;
-  Mesh mesh;
-  v1::Mesh topology;  // the uploaded mesh without its coordinates
-  v1::ResultOptions options;
-};
-
-// One smoothing job: QUEUED → RUNNING → SUCCEEDED | FAILED | CANCELLED (QUEUED → CANCELLED when
-// cancelled before a worker takes it). Thread-safe; shared by the registry, a worker and the
-// handlers watching it.
+// One smoothing job's state machine: QUEUED → RUNNING → SUCCEEDED | FAILED | CANCELLED (QUEUED →
+// CANCELLED when cancelled before a worker takes it). Thread-safe; shared by the registry, a worker
+// and the handlers watching it.
 class Job {
  public:
-  // `metrics` (may be null) counts the job's work and outcome; it must outlive the job.
-  Job(std::string id, v1::Mesh topology, Mesh mesh, SmoothingParams params,
+  // `upload_bytes` is the encoded size of the uploaded mesh. `metrics` (may be null) counts the
+  // job's work and outcome; it must outlive the job.
+  Job(std::string id, wire::UploadedMesh mesh, std::int64_t upload_bytes, SmoothingParams params,
       v1::ResultOptions options, absl::Duration progress_interval,
       ServerMetrics* metrics = nullptr);
 
@@ -42,7 +36,8 @@ class Job {
   // Encoded size of the uploaded mesh: what the job counts against --max_queued_bytes.
   std::int64_t upload_bytes() const { return upload_bytes_; }
 
-  // Runs the engine on the calling (worker) thread; returns at once unless the job is QUEUED.
+  // Runs the engine on the calling (worker) thread (job_run.h); returns at once unless the job is
+  // QUEUED.
   // `start` is the start time the job reports; --max_job_time counts from the same instant.
   void Run(absl::Time start);
   // Queued: CANCELLED at once. Running: the engine stops within one iteration. Final: no-op.
@@ -64,7 +59,7 @@ class Job {
   // The job's events so far, thinned to at most about kMaxTrace (every phase_done and the final
   // event kept), so a dashboard opened late or reloaded can draw the whole run.
   std::vector<v1::ProgressEvent> Trace() const;
-  static constexpr std::size_t kMaxTrace = 1000;
+  static constexpr std::size_t kMaxTrace = JobTrace::kMaxEvents;
   // Element transforms per second since the job started running (0 unless RUNNING): a
   // simultaneous-type iteration transforms every element, a sequential pick one.
   double ElementIterationRate() const;
@@ -82,8 +77,6 @@ class Job {
  private:
   void Publish(v1::ProgressEvent event);  // stamps job id and sequence
   void FinishLocked(absl::Status outcome);
-  void CountElementIterationsLocked(const v1::ProgressEvent& event);
-  void RecordTraceLocked(const v1::ProgressEvent& event);
 
   const std::string id_;
   const std::int64_t upload_bytes_;
@@ -102,12 +95,9 @@ class Job {
   absl::Status outcome_;
   std::string cancel_reason_;
   std::optional<absl::Duration> time_limit_hit_;  // set by StopForTimeLimit
-  std::optional<v1::ProgressEvent> latest_;
   std::uint64_t sequence_ = 0;
-  std::uint64_t element_iterations_ = 0;
   std::optional<v1::SmoothResult> summary_;
-  std::vector<v1::ProgressEvent> trace_;
-  std::uint64_t trace_stride_ = 1;  // keep every trace_stride_-th intermediate event
+  JobTrace trace_;
   bool result_taken_ = false;
   bool result_expired_ = false;
   std::unique_ptr<JobResult> result_;  // input mesh while queued/running, result once SUCCEEDED

@@ -9,14 +9,18 @@
 #include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
 #include "getme_server/job_submission.h"
-#include "getme_server/mesh_conversion.h"
-#include "getme_server/report_conversion.h"
-#include "getme_server/status_mapping.h"
 #include "getme_server/upload_meter.h"
+#include "getme_wire/mesh_assembler.h"
+#include "getme_wire/mesh_chunker.h"
+#include "getme_wire/mesh_upload.h"
+#include "getme_wire/reports.h"
+#include "getme_wire/status.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::server {
 namespace {
+
+using wire::ToGrpcStatus;
 
 // How often a handler waiting for progress checks whether its client is still there: a cancelled
 // call or a passed deadline then cancels the job, which stops within one engine iteration.
@@ -26,15 +30,16 @@ template <typename Header>
 absl::Status CheckHeader(const Header& header, std::int64_t max_elements,
                          const UploadMeter& meter) {
   if (!header.has_expected_size()) return absl::OkStatus();
-  if (auto s = CheckDeclaredSize(header.expected_size(), max_elements); !s.ok()) return s;
+  if (auto s = wire::CheckDeclaredSize(header.expected_size(), max_elements); !s.ok()) return s;
   return meter.CheckDeclared(header.expected_size());
 }
 
-// Reads an upload stream: an optional header first, then mesh chunks. A missing header means
-// default parameters.
+// Reads an upload stream: an optional header first, then mesh chunks, each handed to `upload` as
+// it arrives (wire::MeshUpload builds the engine mesh; no copy of the wire mesh is kept). A
+// missing header means default parameters.
 template <typename Request, typename Header, typename Reader>
 absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64_t max_elements,
-                        UploadMeter meter, Header& header, v1::Mesh& mesh) {
+                        UploadMeter meter, Header& header, wire::MeshUpload& upload) {
   Request request;
   std::int64_t message = 0;
   bool have_header = false;
@@ -50,8 +55,8 @@ absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64
       have_header = true;
       if (auto s = CheckHeader(header, max_elements, meter); !s.ok()) return s;
     } else if (request.has_chunk()) {
-      if (auto s = AppendMeshChunk(request.chunk(), max_elements, mesh); !s.ok()) return s;
-      if (auto s = meter.AddChunk(request.chunk(), mesh); !s.ok()) return s;
+      if (auto s = upload.Add(request.chunk()); !s.ok()) return s;
+      if (auto s = meter.AddChunk(request.chunk(), upload.assembler().nodes()); !s.ok()) return s;
     } else {
       return absl::InvalidArgumentError(
           absl::StrCat("request message ", message, " carries neither a header nor a chunk"));
@@ -60,7 +65,7 @@ absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64
   }
   if (context->IsCancelled()) return absl::CancelledError("the client cancelled the upload");
   if (have_header && header.has_expected_size()) {
-    return CheckExpectedSize(header.expected_size(), mesh);
+    return upload.assembler().CheckExpectedSize(header.expected_size());
   }
   return absl::OkStatus();
 }
@@ -106,13 +111,11 @@ grpc::Status StreamResult(Job& job, JobResult result, Writer* writer) {
     job.RestoreResult(std::move(result));
     return grpc::Status(grpc::StatusCode::CANCELLED, "the client went away before the result");
   }
-  const bool sent =
-      EmitResultChunks(result.topology, result.mesh, result.options.coordinates_only(),
-                       result.options.nodes_per_chunk(), [writer](const v1::MeshChunk& chunk) {
-                         v1::SmoothResponse message;
-                         *message.mutable_chunk() = chunk;
-                         return writer->Write(message);
-                       });
+  wire::MeshChunker chunker(result.mesh, result.ids, result.options.coordinates_only(),
+                            wire::ResultChunkLimits(result.options.nodes_per_chunk()));
+  bool sent = true;
+  v1::SmoothResponse message;
+  while (sent && chunker.Next(*message.mutable_chunk())) sent = writer->Write(message);
   if (!sent) {
     job.RestoreResult(std::move(result));
     return grpc::Status(grpc::StatusCode::CANCELLED,
@@ -138,9 +141,22 @@ absl::Status SmootherService::RefuseWhileDraining() const {
   return absl::UnavailableError("the server is shutting down and accepts no new jobs");
 }
 
-absl::StatusOr<std::shared_ptr<Job>> SmootherService::CreateJob(const v1::SmoothHeader& header,
-                                                                v1::Mesh mesh) {
-  return server::CreateJob(header, std::move(mesh), registry_, options_, metrics_);
+template <typename Reader>
+absl::StatusOr<std::shared_ptr<Job>> SmootherService::ReadJob(grpc::ServerContext* context,
+                                                              Reader* reader) {
+  v1::SmoothHeader header;
+  wire::MeshUpload upload(options_.max_elements);
+  if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements,
+                                             UploadMeter(options_, &registry_), header, upload);
+      !s.ok()) {
+    return s;
+  }
+  absl::StatusOr<SmoothingParams> params = CheckJobRequest(header, options_);
+  if (!params.ok()) return params.status();
+  const std::int64_t upload_bytes = upload.assembler().encoded_bytes();
+  absl::StatusOr<wire::UploadedMesh> mesh = std::move(upload).Finish();
+  if (!mesh.ok()) return mesh.status();
+  return CreateJob(header, *params, *std::move(mesh), upload_bytes, registry_, options_, metrics_);
 }
 
 grpc::Status SmootherService::Smooth(
@@ -151,14 +167,7 @@ grpc::Status SmootherService::Smooth(
   if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
-  v1::SmoothHeader header;
-  v1::Mesh mesh;
-  if (auto s = ReadUpload<v1::SmoothRequest>(context, stream, options_.max_elements,
-                                             UploadMeter(options_, &registry_), header, mesh);
-      !s.ok()) {
-    return ToGrpcStatus(s);
-  }
-  absl::StatusOr<std::shared_ptr<Job>> job = CreateJob(header, std::move(mesh));
+  absl::StatusOr<std::shared_ptr<Job>> job = ReadJob(context, stream);
   if (!job.ok()) return ToGrpcStatus(job.status());
   // Watch before queueing, so this caller sees every event from the first one.
   std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
@@ -194,14 +203,7 @@ grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
   if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
-  v1::SmoothHeader header;
-  v1::Mesh mesh;
-  if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements,
-                                             UploadMeter(options_, &registry_), header, mesh);
-      !s.ok()) {
-    return ToGrpcStatus(s);
-  }
-  absl::StatusOr<std::shared_ptr<Job>> job = CreateJob(header, std::move(mesh));
+  absl::StatusOr<std::shared_ptr<Job>> job = ReadJob(context, reader);
   if (!job.ok()) return ToGrpcStatus(job.status());
   if (auto s = registry_.Submit(*job, *owner); !s.ok()) return ToGrpcStatus(s);
   spdlog::info("job={} queued by SubmitJob from {}{}{}", (*job)->id(), context->peer(),
@@ -285,23 +287,24 @@ grpc::Status SmootherService::EvaluateQuality(
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
   v1::EvaluateQualityHeader header;
-  v1::Mesh wire;
-  if (auto s = ReadUpload<v1::EvaluateQualityRequest>(context, reader, options_.max_elements,
-                                                      UploadMeter(options_, nullptr), header, wire);
+  wire::MeshUpload upload(options_.max_elements);
+  if (auto s = ReadUpload<v1::EvaluateQualityRequest>(
+          context, reader, options_.max_elements, UploadMeter(options_, nullptr), header, upload);
       !s.ok()) {
     return ToGrpcStatus(s);
   }
   if (auto s = CheckHistogramBins(header.histogram_bins(), "histogram_bins"); !s.ok()) {
     return ToGrpcStatus(s);
   }
-  absl::StatusOr<Mesh> mesh = ToEngineMesh(wire, options_.max_elements);
-  if (!mesh.ok()) return ToGrpcStatus(mesh.status());
+  absl::StatusOr<wire::UploadedMesh> uploaded = std::move(upload).Finish();
+  if (!uploaded.ok()) return ToGrpcStatus(uploaded.status());
+  const Mesh* mesh = &uploaded->mesh;
   ThreadPool pool(options_.threads_per_job);
   QualityOptions quality_options;
   if (header.histogram_bins() > 0) {
     quality_options.histogram_bins = static_cast<int>(header.histogram_bins());
   }
-  *report = ToWireReport(EvaluateMeshQuality(*mesh, pool, quality_options), wire);
+  *report = wire::ToWireReport(EvaluateMeshQuality(*mesh, pool, quality_options), uploaded->ids);
   spdlog::info("quality evaluated: nodes={} elements={} q_min={} q_mean={}", mesh->node_count(),
                mesh->element_count(), report->q_min(), report->q_mean());
   return grpc::Status::OK;

@@ -2,10 +2,10 @@
 
 #include "getme/v1/smoother.grpc.pb.h"
 #include "getme_server/authenticator.h"
-#include "getme_server/client_streams.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
+#include "getme_server/stream_limiter.h"
 
 namespace getme::server {
 
@@ -44,7 +44,9 @@ class SmootherService final : public v1::Smoother::Service {
 
  private:
   absl::Status RefuseWhileDraining() const;
-  absl::StatusOr<std::shared_ptr<Job>> CreateJob(const v1::SmoothHeader& header, v1::Mesh mesh);
+  // Reads a Smooth/SubmitJob upload and makes its job (not yet submitted).
+  template <typename Reader>
+  absl::StatusOr<std::shared_ptr<Job>> ReadJob(grpc::ServerContext* context, Reader* reader);
   absl::StatusOr<std::string> CallerOf(const grpc::ServerContext& context) const;
 
   JobRegistry& registry_;

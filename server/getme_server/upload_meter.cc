@@ -19,10 +19,8 @@ absl::Status UploadMeter::CheckDeclared(const v1::MeshSize& expected) const {
                                                  options_.max_nodes, " (--max_nodes)"));
 }
 
-absl::Status UploadMeter::AddChunk(const v1::MeshChunk& chunk, const v1::Mesh& accumulated) {
-  if (auto s = CheckNodeCount(accumulated.coordinates_size() / 3, options_.max_nodes); !s.ok()) {
-    return s;
-  }
+absl::Status UploadMeter::AddChunk(const v1::MeshChunk& chunk, std::int64_t nodes) {
+  if (auto s = CheckNodeCount(nodes, options_.max_nodes); !s.ok()) return s;
   bytes_ += static_cast<std::int64_t>(chunk.ByteSizeLong());
   if (bytes_ > options_.max_upload_bytes) {
     return absl::ResourceExhaustedError(

@@ -26,8 +26,8 @@ class UploadMeter {
       : options_(options), jobs_(jobs) {}
 
   absl::Status CheckDeclared(const v1::MeshSize& expected) const;
-  // `accumulated` already includes `chunk`.
-  absl::Status AddChunk(const v1::MeshChunk& chunk, const v1::Mesh& accumulated);
+  // `nodes` counts the nodes uploaded so far, `chunk`'s included.
+  absl::Status AddChunk(const v1::MeshChunk& chunk, std::int64_t nodes);
 
   std::int64_t bytes() const { return bytes_; }
 

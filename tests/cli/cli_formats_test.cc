@@ -127,7 +127,7 @@ TEST(CliFormats, FixPhysicalByNameAndOutputKeepsGroups) {
   const formats::MeshDocument before = Read(source);
   const formats::MeshDocument after = Read(output);
   EXPECT_EQ(after.as_read.gmsh_version, formats::GmshVersion::k22);  // the input's version
-  EXPECT_EQ(after.as_read.encoding, formats::VtkEncoding::kAscii);
+  EXPECT_EQ(after.as_read.encoding, formats::Encoding::kAscii);
   EXPECT_EQ(CellTypeCounts(after), CellTypeCounts(before));
 
   absl::StatusOr<std::vector<std::int64_t>> inlet_before = formats::GroupCells(before, "inlet");
@@ -158,7 +158,7 @@ TEST(CliFormats, FixPhysicalByNameAndOutputKeepsGroups) {
   EXPECT_GT(moved_wall_nodes, 0) << "--free-boundary should let the unfixed walls move";
 
   // Quality per cell: a value for every volume element, -1 for the surface cells.
-  const formats::VtkDataArray* mean_ratio = formats::FindArray(after.grid.cell_data, "mean_ratio");
+  const formats::DataArray* mean_ratio = formats::FindArray(after.grid.cell_data, "mean_ratio");
   ASSERT_NE(mean_ratio, nullptr);
   ASSERT_EQ(mean_ratio->tuple_count(), after.grid.cells.size());
   for (std::int64_t cell = 0; cell < after.grid.cells.size(); ++cell) {

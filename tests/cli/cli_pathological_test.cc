@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "formats/vtk_writer.h"
 #include "json_test_parser.h"
@@ -88,7 +88,7 @@ TestMesh TetBlock(int n) {
 }
 
 std::string WriteInput(const TestMesh& mesh, const std::string& name) {
-  formats::VtkFile file;
+  formats::UnstructuredGrid file;
   file.title = name;
   file.points.components = 3;
   for (const auto& point : mesh.points) {
@@ -96,7 +96,7 @@ std::string WriteInput(const TestMesh& mesh, const std::string& name) {
   }
   for (const auto& [type, nodes] : mesh.cells) file.cells.Add(type, nodes);
   if (!mesh.fixed.empty()) {
-    formats::VtkDataArray fixed;
+    formats::DataArray fixed;
     fixed.name = "fixed";
     fixed.type = formats::VtkDataType::kInt;
     fixed.integers.assign(mesh.fixed.begin(), mesh.fixed.end());
@@ -119,8 +119,8 @@ void ExpectNoNull(const JsonValue& value, const std::string& where) {
 }
 
 struct Smoothed {
-  formats::VtkFile file;
-  formats::VtkMesh mesh;
+  formats::UnstructuredGrid file;
+  formats::GridMesh mesh;
 };
 
 // Runs `getme smooth --json` and checks a success: every stdout line JSON without a non-finite
@@ -136,13 +136,13 @@ Smoothed ExpectSmoothed(const TestMesh& input, const std::string& name) {
     if (value) ExpectNoNull(*value, "stdout");
   }
   Smoothed result;
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(out);
+  absl::StatusOr<formats::UnstructuredGrid> file = formats::ReadVtkFile(out);
   EXPECT_TRUE(file.ok()) << file.status();
   if (!file.ok()) return result;
   result.file = *std::move(file);
   for (const double value : result.file.points.reals) EXPECT_TRUE(std::isfinite(value));
-  const formats::VtkDataArray* valid = formats::FindArray(result.file.cell_data, "valid");
-  const formats::VtkDataArray* mean_ratio = formats::FindArray(result.file.cell_data, "mean_ratio");
+  const formats::DataArray* valid = formats::FindArray(result.file.cell_data, "valid");
+  const formats::DataArray* mean_ratio = formats::FindArray(result.file.cell_data, "mean_ratio");
   EXPECT_NE(valid, nullptr);
   EXPECT_NE(mean_ratio, nullptr);
   if (valid == nullptr || mean_ratio == nullptr) return result;
@@ -151,7 +151,7 @@ Smoothed ExpectSmoothed(const TestMesh& input, const std::string& name) {
     EXPECT_GT(mean_ratio->AsDouble(cell), 0.0) << "cell " << cell;
     EXPECT_LE(mean_ratio->AsDouble(cell), 1.0) << "cell " << cell;
   }
-  absl::StatusOr<formats::VtkMesh> mesh = formats::ToMesh(result.file);
+  absl::StatusOr<formats::GridMesh> mesh = formats::GridToMesh(result.file);
   EXPECT_TRUE(mesh.ok()) << mesh.status();
   if (mesh.ok()) result.mesh = *std::move(mesh);
   return result;
@@ -170,7 +170,7 @@ void ExpectRefused(const TestMesh& input, const std::string& name,
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-std::array<double, 3> NodeAt(const formats::VtkFile& file, std::int64_t node) {
+std::array<double, 3> NodeAt(const formats::UnstructuredGrid& file, std::int64_t node) {
   return {file.points.AsDouble(3 * node), file.points.AsDouble(3 * node + 1),
           file.points.AsDouble(3 * node + 2)};
 }

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <set>
 
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "getme/elements/element_quality.h"
 #include "getme/elements/vec3.h"
@@ -57,7 +57,7 @@ std::string String(const JsonValue& object, const std::string& key) {
 }
 
 // Per-element mean ratio of a file, recomputed from its coordinates with the core kernel.
-std::vector<double> RecomputedMeanRatios(const formats::VtkMesh& mesh) {
+std::vector<double> RecomputedMeanRatios(const formats::GridMesh& mesh) {
   std::vector<double> quality;
   for (ElementId e = 0; e < mesh.mesh.element_count(); ++e) {
     quality.push_back(DispatchElementType(mesh.mesh.type(e), [&]<ElementType kType>() {
@@ -110,12 +110,12 @@ TEST(CliSmooth, JsonLinesAndAVerifiableOutputFile) {
   EXPECT_EQ(Number(result, "invalid"), 0);
 
   // The written file: same cells, fixed nodes unmoved, mean_ratio equal to a recomputation.
-  const absl::StatusOr<formats::VtkFile> before = formats::ReadVtkFile(input);
-  const absl::StatusOr<formats::VtkFile> after = formats::ReadVtkFile(output);
+  const absl::StatusOr<formats::UnstructuredGrid> before = formats::ReadVtkFile(input);
+  const absl::StatusOr<formats::UnstructuredGrid> after = formats::ReadVtkFile(output);
   ASSERT_TRUE(before.ok() && after.ok()) << after.status();
-  EXPECT_EQ(after->encoding, formats::VtkEncoding::kAscii);  // the input's
+  EXPECT_EQ(after->encoding, formats::Encoding::kAscii);  // the input's
   EXPECT_EQ(after->cells.connectivity, before->cells.connectivity);
-  const formats::VtkDataArray* fixed = formats::FindArray(before->point_data, "fixed");
+  const formats::DataArray* fixed = formats::FindArray(before->point_data, "fixed");
   ASSERT_NE(fixed, nullptr);
   std::int64_t moved_free_nodes = 0;
   for (std::int64_t node = 0; node < before->point_count(); ++node) {
@@ -131,11 +131,11 @@ TEST(CliSmooth, JsonLinesAndAVerifiableOutputFile) {
   }
   EXPECT_GT(moved_free_nodes, 0);
 
-  absl::StatusOr<formats::VtkMesh> mesh = formats::ToMesh(*after);
+  absl::StatusOr<formats::GridMesh> mesh = formats::GridToMesh(*after);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const std::vector<double> recomputed = RecomputedMeanRatios(*mesh);
-  const formats::VtkDataArray* mean_ratio = formats::FindArray(after->cell_data, "mean_ratio");
-  const formats::VtkDataArray* valid = formats::FindArray(after->cell_data, "valid");
+  const formats::DataArray* mean_ratio = formats::FindArray(after->cell_data, "mean_ratio");
+  const formats::DataArray* valid = formats::FindArray(after->cell_data, "valid");
   ASSERT_NE(mean_ratio, nullptr);
   ASSERT_NE(valid, nullptr);
   ASSERT_EQ(mean_ratio->value_count(), 1000);
@@ -170,9 +170,9 @@ TEST(CliSmooth, HumanModePrintsOneLinePerPhaseAndASummaryTable) {
     EXPECT_NE(run.out.find(row), std::string::npos) << "missing '" << row << "' in\n" << run.out;
   }
   EXPECT_EQ(run.out.find('{'), std::string::npos);  // no JSON in human mode
-  const absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(output);
+  const absl::StatusOr<formats::UnstructuredGrid> file = formats::ReadVtkFile(output);
   ASSERT_TRUE(file.ok()) << file.status();
-  EXPECT_EQ(file->encoding, formats::VtkEncoding::kBinary);
+  EXPECT_EQ(file->encoding, formats::Encoding::kBinary);
   std::filesystem::remove(output);
 }
 

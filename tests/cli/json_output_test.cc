@@ -1,4 +1,4 @@
-#include "cli/json_output.h"
+#include "events/json_output.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ using testing::ParseJson;
 
 TEST(JsonOutput, EscapesStringsSoTheyParseBack) {
   const std::string nasty = "quote\" backslash\\ newline\n tab\t bell\x07 path C:\\x ünïcode";
-  const std::string json = JsonObject().AddString("s", nasty).Build();
+  const std::string json = events::JsonObject().AddString("s", nasty).Build();
   const std::optional<JsonValue> parsed = ParseJson(json);
   ASSERT_TRUE(parsed.has_value()) << json;
   EXPECT_EQ(parsed->Find("s")->string, nasty);
@@ -41,14 +41,15 @@ TEST(JsonOutput, BytesThatAreNotUtf8BecomeReplacementCharacters) {
 TEST(JsonOutput, DoublesRoundTripExactly) {
   for (const double value : {0.1, 1.0 / 3.0, 0.7550748808053224, 1e-300, -2.5e10, 0.0,
                              std::nextafter(1.0, 0.0), 5e-324}) {
-    const std::optional<JsonValue> parsed = ParseJson(JsonObject().AddDouble("x", value).Build());
+    const std::optional<JsonValue> parsed =
+        ParseJson(events::JsonObject().AddDouble("x", value).Build());
     ASSERT_TRUE(parsed.has_value());
     EXPECT_EQ(parsed->Find("x")->number, value);
   }
 }
 
 TEST(JsonOutput, NonFiniteDoublesBecomeNull) {
-  const std::string json = JsonObject()
+  const std::string json = events::JsonObject()
                                .AddDouble("nan", std::nan(""))
                                .AddDouble("inf", std::numeric_limits<double>::infinity())
                                .Build();
@@ -57,11 +58,11 @@ TEST(JsonOutput, NonFiniteDoublesBecomeNull) {
 
 TEST(JsonOutput, KeepsKeyOrderAndTypes) {
   const std::int64_t ids[] = {3, 1, 2};
-  const std::string json = JsonObject()
+  const std::string json = events::JsonObject()
                                .AddString("event", "result")
                                .AddInt("big", INT64_C(9007199254740993))
                                .AddBool("done", true)
-                               .AddRaw("ids", JsonIntArray(ids))
+                               .AddRaw("ids", events::JsonIntArray(ids))
                                .Build();
   EXPECT_EQ(json, R"({"event":"result","big":9007199254740993,"done":true,"ids":[3,1,2]})");
 }

@@ -11,10 +11,14 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_split.h"
+#include "getme_wire/engine_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
 #include "json_test_parser.h"
+#include "remote/grid_upload.h"
 #include "remote/smoother_client.h"
-#include "remote/wire_conversion.h"
-#include "remote/wire_mesh.h"
 #include "run_getme.h"
 #include "test_meshes.h"
 #include "test_server.h"
@@ -28,6 +32,8 @@ using cli::testing::ParseJson;
 using cli::testing::RunGetme;
 using cli::testing::RunResult;
 using cli::testing::TempPath;
+using wire::ToWireMesh;
+using wire::ToWireParameters;
 
 const std::string kHybrid = std::string(GETME_TEST_DATA) + "/hybrid-example.vtk";
 const std::string kHexBlock =

@@ -9,8 +9,12 @@
 #include <thread>
 
 #include "getme/smoothing/smoother.h"
-#include "remote/wire_conversion.h"
-#include "remote/wire_mesh.h"
+#include "getme_wire/engine_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
+#include "remote/grid_upload.h"
 #include "test_meshes.h"
 #include "test_server.h"
 
@@ -18,6 +22,9 @@ namespace getme::remote {
 namespace {
 
 using testing::DistortedHexBlock;
+using wire::FromWireProgress;
+using wire::ToWireMesh;
+using wire::ToWireParameters;
 
 struct LocalRun {
   std::vector<double> coordinates;

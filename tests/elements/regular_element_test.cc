@@ -1,6 +1,6 @@
 // Regular elements (unit edges, paper node order) are valid with mean ratio 1, their mirror images
 // are invalid, and the transformation maps them to regular elements for every σ — the sharpest
-// check of the tables and of τ in eq. (5) (NOTES.md §3).
+// check of the tables and of τ in eq. (5) (paper Sec. 2.1, the paragraph after eq. (5)).
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-// Regular elements with unit edge length, built from their geometric description in the node order
-// of NOTES.md §1 (not from the W columns: the tests compare against W afterwards), plus mirror
-// images and similarity maps.
+// Regular elements with unit edge length, built from their geometric description in the paper's
+// node order (Fig. 1, docs/node-orders.md; not from the W columns: the tests compare against W
+// afterwards), plus mirror images and similarity maps.
 
 #include <Eigen/Geometry>
 #include <cmath>

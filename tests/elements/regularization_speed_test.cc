@@ -1,4 +1,4 @@
-// Regularization speed (paper Fig. 4b, NOTES.md §7): random valid elements (nodes uniform in the
+// Regularization speed (paper Sec. 2.2, Fig. 4 (b)): random valid elements (nodes uniform in the
 // unit cube, invalid ones discarded) regularize under repeated transform + mean-edge-length
 // scaling with ρ = 1 in a type-typical number of steps, and the share of valid random elements is
 // the paper's.
@@ -23,8 +23,9 @@ constexpr int kElementsPerType = 1000;
 constexpr double kRegularQuality = 1.0 - 1e-6;  // "deviated less than 10⁻⁶ from one"
 constexpr int kIterationCap = 1000;
 
-// Reference values of NOTES.md §7 (2,000 elements per type, reproduced independently of the
-// paper's Fig. 4b), indexed by TypeIndex.
+// Reference values of our own measurement (2,000 elements per type): the paper's Fig. 4 (b) gives
+// curves only, its Sec. 2.2 the valid shares (docs/paper-notes.md#regularization-speed). Indexed
+// by TypeIndex.
 constexpr double kValidShare[kElementTypeCount] = {0.502, 0.0037, 0.093, 0.053};
 constexpr double kMeanIterationsSigmaOne[kElementTypeCount] = {14.3, 6.9, 13.0, 13.6};
 constexpr double kMeanIterationsSigmaHalf[kElementTypeCount] = {7.1, 3.8, 6.7, 6.6};

@@ -43,7 +43,7 @@ std::string Replace(std::string text, const std::string& from, const std::string
 // Parses and returns the error message, failing the test if parsing succeeds or the error is
 // not InvalidArgument.
 std::string ParseError(const std::string& text) {
-  const absl::StatusOr<VtkFile> file = ParseVtk(text);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(text);
   EXPECT_FALSE(file.ok());
   if (file.ok()) return "";
   EXPECT_EQ(file.status().code(), absl::StatusCode::kInvalidArgument) << file.status();
@@ -75,7 +75,7 @@ TEST(VtkMalformed, CarriageReturnInsideTheTitle) {
             "line 2: the title holds a carriage return that is not part of the line ending");
   EXPECT_EQ(ParseError(Replace(kTet, "tet\n", "t\ret\n")),
             "line 2: the title holds a carriage return that is not part of the line ending");
-  const absl::StatusOr<VtkFile> crlf = ParseVtk(Replace(kTet, "tet\n", "tet\r\n"));
+  const absl::StatusOr<UnstructuredGrid> crlf = ParseVtk(Replace(kTet, "tet\n", "tet\r\n"));
   ASSERT_TRUE(crlf.ok()) << crlf.status();
   EXPECT_EQ(crlf->title, "tet");
 }
@@ -195,9 +195,9 @@ TEST(VtkMalformed, MissingSections) {
 
 // kTet as BINARY, by the writer (checked against hand-made bytes in vtk_round_trip_test).
 std::string BinaryTet() {
-  const absl::StatusOr<VtkFile> file = ParseVtk(kTet);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(kTet);
   EXPECT_TRUE(file.ok());
-  return *SerializeVtk(*file, VtkEncoding::kBinary);
+  return *SerializeVtk(*file, Encoding::kBinary);
 }
 
 TEST(VtkMalformedBinary, PointsBlockTooShort) {
@@ -245,7 +245,8 @@ TEST(VtkMalformedBinary, MissingLookupTableLine) {
 
 void ExpectNoCrashOnTruncations(const std::string& bytes) {
   for (std::size_t length = 0; length < bytes.size(); ++length) {
-    const absl::StatusOr<VtkFile> file = ParseVtk(absl::string_view(bytes).substr(0, length));
+    const absl::StatusOr<UnstructuredGrid> file =
+        ParseVtk(absl::string_view(bytes).substr(0, length));
     if (!file.ok()) {
       ASSERT_EQ(file.status().code(), absl::StatusCode::kInvalidArgument) << length;
     }
@@ -253,17 +254,17 @@ void ExpectNoCrashOnTruncations(const std::string& bytes) {
 }
 
 TEST(VtkRobustness, EveryTruncationOfAsciiAndBinaryFiles) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(SharedMesh("hexes_4by2by2.vtk"));
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(SharedMesh("hexes_4by2by2.vtk"));
   ASSERT_TRUE(file.ok()) << file.status();
-  ExpectNoCrashOnTruncations(*SerializeVtk(*file, VtkEncoding::kAscii));
-  ExpectNoCrashOnTruncations(*SerializeVtk(*file, VtkEncoding::kBinary));
+  ExpectNoCrashOnTruncations(*SerializeVtk(*file, Encoding::kAscii));
+  ExpectNoCrashOnTruncations(*SerializeVtk(*file, Encoding::kBinary));
 }
 
 TEST(VtkRobustness, RandomByteDamage) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(SharedMesh("6-wedge-prism.vtk"));
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(SharedMesh("6-wedge-prism.vtk"));
   ASSERT_TRUE(file.ok()) << file.status();
   std::mt19937 random(12345);
-  for (const VtkEncoding encoding : {VtkEncoding::kAscii, VtkEncoding::kBinary}) {
+  for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
     const std::string original = *SerializeVtk(*file, encoding);
     for (int trial = 0; trial < 3000; ++trial) {
       std::string damaged = original;
@@ -271,7 +272,7 @@ TEST(VtkRobustness, RandomByteDamage) {
       for (int f = 0; f < flips; ++f) {
         damaged[random() % damaged.size()] = static_cast<char>(random() % 256);
       }
-      const absl::StatusOr<VtkFile> result = ParseVtk(damaged);
+      const absl::StatusOr<UnstructuredGrid> result = ParseVtk(damaged);
       if (!result.ok()) {
         ASSERT_EQ(result.status().code(), absl::StatusCode::kInvalidArgument);
         ASSERT_FALSE(result.status().message().empty());

@@ -81,7 +81,7 @@ f32 3 3 float
 )";
 
 TEST(VtkRoundTrip, ReadsEverySectionKind) {
-  const absl::StatusOr<VtkFile> file = ParseVtk(kAllSections);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(kAllSections);
   ASSERT_TRUE(file.ok()) << file.status();
   ASSERT_EQ(file->field_data.size(), 1u);
   EXPECT_EQ(file->field_data[0].arrays[0].reals, std::vector<double>{1.5});
@@ -110,12 +110,12 @@ TEST(VtkRoundTrip, ReadsEverySectionKind) {
 }
 
 TEST(VtkRoundTrip, AsciiAndBinaryKeepEverything) {
-  const absl::StatusOr<VtkFile> file = ParseVtk(kAllSections);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(kAllSections);
   ASSERT_TRUE(file.ok()) << file.status();
-  for (const VtkEncoding encoding : {VtkEncoding::kAscii, VtkEncoding::kBinary}) {
+  for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
     const absl::StatusOr<std::string> bytes = SerializeVtk(*file, encoding);
     ASSERT_TRUE(bytes.ok()) << bytes.status();
-    const absl::StatusOr<VtkFile> again = ParseVtk(*bytes);
+    const absl::StatusOr<UnstructuredGrid> again = ParseVtk(*bytes);
     ASSERT_TRUE(again.ok()) << again.status() << "\n" << *bytes;
     ExpectSameContent(*file, *again);
     // And once more from the re-read file: byte-identical.
@@ -124,9 +124,9 @@ TEST(VtkRoundTrip, AsciiAndBinaryKeepEverything) {
 }
 
 TEST(VtkRoundTrip, FloatArraysArePromotedOnlyWhenNeeded) {
-  const absl::StatusOr<VtkFile> file = ParseVtk(kAllSections);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(kAllSections);
   ASSERT_TRUE(file.ok()) << file.status();
-  const std::string ascii = *SerializeVtk(*file, VtkEncoding::kAscii);
+  const std::string ascii = *SerializeVtk(*file, Encoding::kAscii);
   // POINTS hold 0.1 (not a float): written as double, in the shortest exact form.
   EXPECT_NE(ascii.find("POINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.1 0.2 0.3\n"),
             std::string::npos)
@@ -138,7 +138,7 @@ TEST(VtkRoundTrip, FloatArraysArePromotedOnlyWhenNeeded) {
 }
 
 TEST(VtkRoundTrip, CoordinatesSurviveBitForBit) {
-  VtkFile file;
+  UnstructuredGrid file;
   file.points.type = VtkDataType::kDouble;
   file.points.components = 3;
   file.points.reals = {0.1,
@@ -153,8 +153,8 @@ TEST(VtkRoundTrip, CoordinatesSurviveBitForBit) {
   file.cells.Add(1, {0});
   file.cells.Add(1, {1});
   file.cells.Add(1, {2});
-  for (const VtkEncoding encoding : {VtkEncoding::kAscii, VtkEncoding::kBinary}) {
-    const absl::StatusOr<VtkFile> again = ParseVtk(*SerializeVtk(file, encoding));
+  for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
+    const absl::StatusOr<UnstructuredGrid> again = ParseVtk(*SerializeVtk(file, encoding));
     ASSERT_TRUE(again.ok()) << again.status();
     ASSERT_EQ(again->points.reals.size(), file.points.reals.size());
     for (std::size_t i = 0; i < file.points.reals.size(); ++i) {
@@ -169,15 +169,15 @@ TEST(VtkRoundTrip, CoordinatesSurviveBitForBit) {
 // values: printed as the shortest decimal of the double, not of the float ("0.1" would read
 // back as the double 0.1, not as 0.1f).
 TEST(VtkRoundTrip, ExactFloatsSurviveAscii) {
-  VtkFile file;
+  UnstructuredGrid file;
   file.points.type = VtkDataType::kFloat;
   file.points.components = 3;
   file.points.reals = {0.1f, 1.0f / 3.0f, 9.49f, 1e-30f, -7.25f, 3.4e38f};
   file.cells.Add(1, {0});
   file.cells.Add(1, {1});
-  const std::string ascii = *SerializeVtk(file, VtkEncoding::kAscii);
+  const std::string ascii = *SerializeVtk(file, Encoding::kAscii);
   EXPECT_NE(ascii.find("POINTS 2 float\n0.10000000149011612 "), std::string::npos) << ascii;
-  const absl::StatusOr<VtkFile> again = ParseVtk(ascii);
+  const absl::StatusOr<UnstructuredGrid> again = ParseVtk(ascii);
   ASSERT_TRUE(again.ok()) << again.status();
   ASSERT_EQ(again->points.reals.size(), file.points.reals.size());
   for (std::size_t i = 0; i < file.points.reals.size(); ++i) {
@@ -211,9 +211,9 @@ TEST(VtkBinaryLayout, ReadsHandMadeBigEndianBytes) {
   PutInt32(bytes, 70000);
   bytes += "\n";
 
-  const absl::StatusOr<VtkFile> file = ParseVtk(bytes);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(bytes);
   ASSERT_TRUE(file.ok()) << file.status();
-  EXPECT_EQ(file->encoding, VtkEncoding::kBinary);
+  EXPECT_EQ(file->encoding, Encoding::kBinary);
   EXPECT_EQ(file->points.type, VtkDataType::kFloat);
   EXPECT_EQ(file->points.reals, (std::vector<double>{1, 2, -3, 0.5, 0.25, 0.125}));
   EXPECT_EQ(file->cells.connectivity, (std::vector<std::int64_t>{1, 0}));
@@ -221,7 +221,7 @@ TEST(VtkBinaryLayout, ReadsHandMadeBigEndianBytes) {
   EXPECT_EQ(file->point_data[0].arrays[0].integers, (std::vector<std::int64_t>{1, 0}));
   EXPECT_EQ(file->point_data[1].arrays[0].integers, (std::vector<std::int64_t>{-7, 70000}));
   // The writer produces exactly these bytes (the float points stay float: they are exact).
-  EXPECT_EQ(*SerializeVtk(*file, VtkEncoding::kBinary), bytes);
+  EXPECT_EQ(*SerializeVtk(*file, Encoding::kBinary), bytes);
 }
 
 constexpr char kVersion51[] = R"(# vtk DataFile Version 5.1
@@ -246,25 +246,25 @@ CELL_TYPES 2
 )";
 
 TEST(VtkVersion51, ReadsOffsetsAndConnectivity) {
-  const absl::StatusOr<VtkFile> file = ParseVtk(kVersion51);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(kVersion51);
   ASSERT_TRUE(file.ok()) << file.status();
   EXPECT_EQ(file->cells.offsets, (std::vector<std::int64_t>{0, 6, 10}));
   EXPECT_EQ(file->cells.connectivity, (std::vector<std::int64_t>{0, 2, 1, 3, 5, 4, 0, 1, 2, 3}));
   EXPECT_EQ(file->cells.types, (std::vector<std::uint8_t>{13, 10}));
-  for (const VtkEncoding encoding : {VtkEncoding::kAscii, VtkEncoding::kBinary}) {
+  for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
     const std::string bytes = *SerializeVtk(*file, encoding);
     EXPECT_NE(bytes.find("OFFSETS vtktypeint64"), std::string::npos);
-    const absl::StatusOr<VtkFile> again = ParseVtk(bytes);
+    const absl::StatusOr<UnstructuredGrid> again = ParseVtk(bytes);
     ASSERT_TRUE(again.ok()) << again.status();
     ExpectSameContent(*file, *again);
   }
   // Written as version 3.0, the same cells come out as classic rows.
-  VtkFile classic = *file;
+  UnstructuredGrid classic = *file;
   classic.version_major = 3;
   classic.version_minor = 0;
-  const std::string bytes = *SerializeVtk(classic, VtkEncoding::kAscii);
+  const std::string bytes = *SerializeVtk(classic, Encoding::kAscii);
   EXPECT_NE(bytes.find("CELLS 2 12\n6 0 2 1 3 5 4\n4 0 1 2 3\n"), std::string::npos) << bytes;
-  const absl::StatusOr<VtkFile> again = ParseVtk(bytes);
+  const absl::StatusOr<UnstructuredGrid> again = ParseVtk(bytes);
   ASSERT_TRUE(again.ok()) << again.status();
   EXPECT_EQ(again->cells.connectivity, file->cells.connectivity);
 }
@@ -272,42 +272,42 @@ TEST(VtkVersion51, ReadsOffsetsAndConnectivity) {
 TEST(VtkVersion51, InconsistentOffsetsAreRefused) {
   std::string text = kVersion51;
   text.replace(text.find("0 6 10"), 6, "0 6 11");
-  const absl::StatusOr<VtkFile> file = ParseVtk(text);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(text);
   ASSERT_FALSE(file.ok());
   EXPECT_EQ(file.status().message(),
             "line 12: OFFSETS: the last offset is 11, but CONNECTIVITY has 10 entries");
 }
 
 TEST(VtkWriter, RefusesInconsistentModels) {
-  VtkFile file;
+  UnstructuredGrid file;
   file.points.components = 3;
   file.points.reals = {0, 0, 0};
   file.cells.Add(1, {1});
-  absl::StatusOr<std::string> bytes = SerializeVtk(file, VtkEncoding::kAscii);
+  absl::StatusOr<std::string> bytes = SerializeVtk(file, Encoding::kAscii);
   ASSERT_FALSE(bytes.ok());
   EXPECT_EQ(bytes.status().message(), "CELLS: cell 0 refers to point 1, but there are 1 points");
 
-  file.cells = VtkCells();
+  file.cells = GridCells();
   VtkAttribute scalars{VtkAttributeKind::kScalars, "flag", "default", {}};
   scalars.arrays.push_back({"flag", VtkDataType::kUnsignedChar, 1, {}, {300}});
   file.point_data.push_back(scalars);
-  bytes = SerializeVtk(file, VtkEncoding::kBinary);
+  bytes = SerializeVtk(file, Encoding::kBinary);
   ASSERT_FALSE(bytes.ok());
   EXPECT_EQ(bytes.status().message(),
             "POINT_DATA SCALARS flag: value 0 (300) does not fit type unsigned_char");
 
   file.point_data[0].arrays[0].integers = {1, 2};
-  bytes = SerializeVtk(file, VtkEncoding::kAscii);
+  bytes = SerializeVtk(file, Encoding::kAscii);
   ASSERT_FALSE(bytes.ok());
   EXPECT_EQ(bytes.status().message(), "POINT_DATA SCALARS flag: has 2 tuples; expected 1");
 }
 
 TEST(VtkWriter, WritesFilesAtomicallyAndReportsBadPaths) {
   const std::string path = ::testing::TempDir() + "/vtk_writer_test.vtk";
-  const absl::StatusOr<VtkFile> file = ParseVtk(kAllSections);
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(kAllSections);
   ASSERT_TRUE(file.ok());
-  ASSERT_TRUE(WriteVtkFile(path, *file, VtkEncoding::kBinary).ok());
-  const absl::StatusOr<VtkFile> again = ReadVtkFile(path);
+  ASSERT_TRUE(WriteVtkFile(path, *file, Encoding::kBinary).ok());
+  const absl::StatusOr<UnstructuredGrid> again = ReadVtkFile(path);
   ASSERT_TRUE(again.ok()) << again.status();
   ExpectSameContent(*file, *again);
 
@@ -315,7 +315,7 @@ TEST(VtkWriter, WritesFilesAtomicallyAndReportsBadPaths) {
   EXPECT_EQ(status.code(), absl::StatusCode::kNotFound);
   EXPECT_NE(status.message().find("cannot write '/nonexistent-dir/x.vtk'"), std::string::npos);
 
-  const absl::StatusOr<VtkFile> missing = ReadVtkFile("/nonexistent-dir/x.vtk");
+  const absl::StatusOr<UnstructuredGrid> missing = ReadVtkFile("/nonexistent-dir/x.vtk");
   EXPECT_EQ(missing.status().code(), absl::StatusCode::kNotFound);
   EXPECT_NE(missing.status().message().find("cannot open '/nonexistent-dir/x.vtk'"),
             std::string::npos);

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "formats/vtk_mesh.h"
+#include <regex>
+#include <set>
+#include <string>
+
+#include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "formats/vtk_writer.h"
 #include "vtk_test_util.h"
@@ -22,9 +26,9 @@ class SharedMeshTest : public ::testing::TestWithParam<std::string> {};
 TEST_P(SharedMeshTest, ReadsWithTheDeclaredCounts) {
   const std::string path = SharedMesh(GetParam());
   const std::string text = ReadText(path);
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(path);
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(path);
   ASSERT_TRUE(file.ok()) << file.status();
-  EXPECT_EQ(file->encoding, VtkEncoding::kAscii);
+  EXPECT_EQ(file->encoding, Encoding::kAscii);
   EXPECT_EQ(file->point_count(), DeclaredCount(text, "POINTS"));
   EXPECT_EQ(file->cells.size(), DeclaredCount(text, "CELLS"));
   EXPECT_EQ(file->cells.size(), DeclaredCount(text, "CELL_TYPES"));
@@ -36,35 +40,35 @@ TEST_P(SharedMeshTest, ReadsWithTheDeclaredCounts) {
 }
 
 TEST_P(SharedMeshTest, AsciiRoundTripIsExact) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(SharedMesh(GetParam()));
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(SharedMesh(GetParam()));
   ASSERT_TRUE(file.ok()) << file.status();
-  const absl::StatusOr<std::string> ascii = SerializeVtk(*file, VtkEncoding::kAscii);
+  const absl::StatusOr<std::string> ascii = SerializeVtk(*file, Encoding::kAscii);
   ASSERT_TRUE(ascii.ok()) << ascii.status();
-  const absl::StatusOr<VtkFile> again = ParseVtk(*ascii);
+  const absl::StatusOr<UnstructuredGrid> again = ParseVtk(*ascii);
   ASSERT_TRUE(again.ok()) << again.status();
-  EXPECT_EQ(again->encoding, VtkEncoding::kAscii);
+  EXPECT_EQ(again->encoding, Encoding::kAscii);
   ExpectSameContent(*file, *again);
   // Writing what was read gives the same bytes again.
-  EXPECT_EQ(*SerializeVtk(*again, VtkEncoding::kAscii), *ascii);
+  EXPECT_EQ(*SerializeVtk(*again, Encoding::kAscii), *ascii);
 }
 
 TEST_P(SharedMeshTest, BinaryRoundTripIsExact) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(SharedMesh(GetParam()));
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(SharedMesh(GetParam()));
   ASSERT_TRUE(file.ok()) << file.status();
-  const absl::StatusOr<std::string> binary = SerializeVtk(*file, VtkEncoding::kBinary);
+  const absl::StatusOr<std::string> binary = SerializeVtk(*file, Encoding::kBinary);
   ASSERT_TRUE(binary.ok()) << binary.status();
   EXPECT_NE(binary->find("\nBINARY\n"), std::string::npos);
-  const absl::StatusOr<VtkFile> again = ParseVtk(*binary);
+  const absl::StatusOr<UnstructuredGrid> again = ParseVtk(*binary);
   ASSERT_TRUE(again.ok()) << again.status();
-  EXPECT_EQ(again->encoding, VtkEncoding::kBinary);
+  EXPECT_EQ(again->encoding, Encoding::kBinary);
   ExpectSameContent(*file, *again);
-  EXPECT_EQ(*SerializeVtk(*again, VtkEncoding::kBinary), *binary);
+  EXPECT_EQ(*SerializeVtk(*again, Encoding::kBinary), *binary);
 }
 
 TEST_P(SharedMeshTest, ConvertsToTheEngineMeshUnlessItIsASurface) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(SharedMesh(GetParam()));
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(SharedMesh(GetParam()));
   ASSERT_TRUE(file.ok()) << file.status();
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(*file);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(*file);
   if (GetParam() == "sph-10-zsquare.vtk") {
     ASSERT_FALSE(mesh.ok());
     EXPECT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
@@ -92,12 +96,28 @@ INSTANTIATE_TEST_SUITE_P(Mesquite, SharedMeshTest, ::testing::ValuesIn(AllShared
                            return name;
                          });
 
-TEST(SharedMeshes, AllSeventeenArePresent) { EXPECT_EQ(AllSharedMeshNames().size(), 17u); }
+// The parametrized tests above run over what the folder holds; this pins the folder to what
+// ../shared/meshes/README.md documents for mesquite/ (17 meshes when these tests were written, 20
+// since the corpus grew), so a missing or half-copied folder cannot pass with fewer meshes.
+TEST(SharedMeshes, EveryMeshTheReadmeListsIsPresent) {
+  const std::string readme = ReadText(std::string(GETME_SHARED_MESHES) + "/README.md");
+  const std::string mesquite_part = readme.substr(0, readme.find("## su2/"));
+  std::set<std::string> listed;
+  static const std::regex kVtkName(R"(([A-Za-z0-9_./-]+)\.vtk)");
+  for (auto it = std::sregex_iterator(mesquite_part.begin(), mesquite_part.end(), kVtkName);
+       it != std::sregex_iterator(); ++it) {
+    // "../su2/…" rows are meshes of the other folder.
+    if ((*it)[1].str().find('/') == std::string::npos) listed.insert((*it)[1].str() + ".vtk");
+  }
+  const std::vector<std::string> present = AllSharedMeshNames();
+  EXPECT_GE(listed.size(), 17u);
+  EXPECT_EQ(std::set<std::string>(present.begin(), present.end()), listed);
+}
 
 TEST(SharedMeshes, MixedMeshHasTheDocumentedTypeCounts) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(SharedMesh("mixed-hex-pyr-tet.vtk"));
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(SharedMesh("mixed-hex-pyr-tet.vtk"));
   ASSERT_TRUE(file.ok()) << file.status();
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(*file);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(*file);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   // meshes/README.md: 940 (445 tet, 305 hex, 190 pyr).
   EXPECT_EQ(mesh->mesh.element_count(ElementType::kTetrahedron), 445);

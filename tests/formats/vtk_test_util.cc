@@ -52,8 +52,7 @@ std::int64_t DeclaredCount(const std::string& text, const std::string& keyword) 
 
 namespace {
 
-void ExpectSameArray(const VtkDataArray& expected, const VtkDataArray& actual,
-                     const std::string& where) {
+void ExpectSameArray(const DataArray& expected, const DataArray& actual, const std::string& where) {
   SCOPED_TRACE(where + " array '" + expected.name + "'");
   EXPECT_EQ(expected.name, actual.name);
   EXPECT_EQ(expected.components, actual.components);
@@ -85,7 +84,7 @@ void ExpectSameAttributes(const std::vector<VtkAttribute>& expected,
 
 }  // namespace
 
-void ExpectSameContent(const VtkFile& expected, const VtkFile& actual) {
+void ExpectSameContent(const UnstructuredGrid& expected, const UnstructuredGrid& actual) {
   EXPECT_EQ(expected.title, actual.title);
   EXPECT_EQ(expected.version_major, actual.version_major);
   EXPECT_EQ(expected.version_minor, actual.version_minor);

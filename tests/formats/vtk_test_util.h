@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats::testing {
 
@@ -22,6 +22,6 @@ std::vector<std::int64_t> DeclaredNumbers(const std::string& text, const std::st
 
 // Asserts (gtest) that two files hold the same points (bit for bit), cells and attributes.
 // Array types may differ only by float → double promotion.
-void ExpectSameContent(const VtkFile& expected, const VtkFile& actual);
+void ExpectSameContent(const UnstructuredGrid& expected, const UnstructuredGrid& actual);
 
 }  // namespace getme::formats::testing

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <string>
 
-#include "formats/vtk_file.h"
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
+#include "formats/unstructured_grid.h"
 #include "formats/vtk_reader.h"
 #include "getme/meshgen/hybrid_block.h"
 #include "mesh_checks.h"
@@ -18,10 +18,10 @@ namespace {
 
 TEST(HybridExampleFileTest, IsTheHybridBlockItClaimsToBeWithAllFourTypes) {
   const std::string path = std::string(GETME_TEST_DATA) + "/hybrid-example.vtk";
-  absl::StatusOr<formats::VtkFile> file = formats::ReadVtkFile(path);
+  absl::StatusOr<formats::UnstructuredGrid> file = formats::ReadVtkFile(path);
   ASSERT_TRUE(file.ok()) << file.status();
-  EXPECT_EQ(file->encoding, formats::VtkEncoding::kAscii);
-  absl::StatusOr<formats::VtkMesh> read = formats::ToMesh(*file);
+  EXPECT_EQ(file->encoding, formats::Encoding::kAscii);
+  absl::StatusOr<formats::GridMesh> read = formats::GridToMesh(*file);
   ASSERT_TRUE(read.ok()) << read.status();
   absl::StatusOr<Mesh> generated = HybridBlock(7, 7, 8, 0.3, 1);
   ASSERT_TRUE(generated.ok()) << generated.status();

@@ -1,15 +1,16 @@
 #pragma once
 
 // Independent checks of generated meshes: validity, per-element mean ratio and face conformity,
-// computed from the element tables (NOTES.md §2) without the engine's topology code.
+// computed from the element tables (paper Secs. 2.1–2.2, element_tables.h) without the engine's
+// topology code.
 
 #include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
 
-#include "getme/mesh/mesh.h"
 #include "getme/elements/vec3.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::testing {
 

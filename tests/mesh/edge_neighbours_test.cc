@@ -125,7 +125,7 @@ TEST(EdgeNeighbours, SharedEdgesAppearOnceAndFaceDiagonalsNever) {
 
 TEST(EdgeNeighbours, MixedMeshMatchesTheUnionOfElementEdges) {
   // In the prism cube the pyramid's and tet's edges are not unit length, so use the node pairs
-  // each element type connects by its edges as NOTES.md §2 lists them.
+  // each element type connects by its geometric edges (docs/node-orders.md, the tables section).
   const MeshSpec spec = PrismCubeWithPyramidAndTet();
   const absl::StatusOr<Mesh> mesh = BuildMesh(spec);
   ASSERT_TRUE(mesh.ok()) << mesh.status();

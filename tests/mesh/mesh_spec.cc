@@ -93,8 +93,9 @@ MeshSpec HexBlockWithPyramidCell() {
   MeshSpec spec = HexBlockWithoutCell(kCells, HexBlockCellId(kCells, 1, 1, 1));
   const std::vector<std::int64_t> cell = HexCellNodes(kCells, 1, 1, 1);
   const std::int64_t apex = spec.AddNode(Eigen::Vector3d(1.5, 1.5, 1.5));
-  // The cell's six faces as bases (NOTES.md §2, hex F), each turned counter-clockwise as seen from
-  // the apex, which is what makes the pyramid valid (NOTES.md §1).
+  // The cell's six faces as bases (the paper's F of the hexahedron, Sec. 2.1), each turned
+  // counter-clockwise as seen from the apex, which is what makes the pyramid valid
+  // (docs/node-orders.md).
   const int faces[6][4] = {{0, 1, 2, 3}, {0, 1, 5, 4}, {1, 2, 6, 5},
                            {2, 3, 7, 6}, {3, 0, 4, 7}, {4, 7, 6, 5}};
   for (const auto& face : faces) {

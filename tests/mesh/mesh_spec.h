@@ -16,7 +16,7 @@ namespace getme::mesh_test {
 
 struct ElementSpec {
   ElementType type;
-  std::vector<std::int64_t> nodes;  // paper node order (NOTES.md §1)
+  std::vector<std::int64_t> nodes;  // paper node order (Fig. 1, docs/node-orders.md)
 };
 
 struct MeshSpec {

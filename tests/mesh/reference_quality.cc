@@ -12,7 +12,7 @@ namespace getme::mesh_test {
 namespace {
 
 struct Reference {
-  std::vector<std::array<int, 4>> node_tets;  // NOTES.md §2 "N"
+  std::vector<std::array<int, 4>> node_tets;  // N (paper Sec. 2.2, before eq. (9)), 0-based
   Eigen::Matrix3d target;                     // W, by columns
 };
 

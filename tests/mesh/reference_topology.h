@@ -1,7 +1,7 @@
 #pragma once
 
-// Brute-force topology of a MeshSpec, computed from the paper's face table (NOTES.md §2) typed in
-// here, independently of core/getme/mesh.cc and element_tables.h.
+// Brute-force topology of a MeshSpec, computed from the paper's face tables (F, Sec. 2.1, before
+// eq. (1)) typed in here, independently of core/getme/mesh.cc and element_tables.h.
 
 #include <cstdint>
 #include <vector>
@@ -10,7 +10,8 @@
 
 namespace getme::mesh_test {
 
-// Faces of one element type as local node lists (3 or 4 entries), NOTES.md §2 "F".
+// Faces of one element type as local node lists (3 or 4 entries): the paper's F (Sec. 2.1),
+// 0-based.
 const std::vector<std::vector<int>>& ReferenceFaces(ElementType type);
 
 struct ReferenceTopology {

@@ -34,7 +34,7 @@ class ErrorsTest : public ::testing::Test {
     }
     for (std::uint32_t i : {0, 1, 2, 3, 1, 2, 3, 4}) mesh.add_tetrahedra(i);
     for (std::uint32_t i = 5; i <= 12; ++i) mesh.add_hexahedra(i);
-    // VTK wedge: triangle (0, 1, 2) clockwise seen from (3, 4, 5) (NOTES.md §1).
+    // VTK wedge: triangle (0, 1, 2) clockwise seen from (3, 4, 5) (docs/node-orders.md).
     for (std::uint32_t i : {5, 8, 6, 9, 12, 10}) mesh.add_wedges(i);
     for (std::uint32_t i : {5, 6, 7, 8, 11}) mesh.add_pyramids(i);
     return mesh;

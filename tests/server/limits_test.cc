@@ -8,7 +8,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
-#include "getme_server/client_streams.h"
+#include "getme_server/stream_limiter.h"
 #include "gmock/gmock.h"
 #include "gtest/gtest.h"
 #include "server_test_support.h"

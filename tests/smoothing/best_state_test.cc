@@ -1,6 +1,7 @@
-// The simultaneous substep hands on its best-q_mean state, not the last one (NOTES.md §5). The
-// engine keeps that state without copying the mesh after every improving iteration, so the test
-// checks it against an independent run stopped at the best iteration.
+// The simultaneous substep hands on its best-q_mean state, not the last one
+// (docs/paper-notes.md#simultaneous-stop-rule). The engine keeps that state without copying the
+// mesh after every improving iteration, so the test checks it against an independent run stopped
+// at the best iteration.
 
 #include <gtest/gtest.h>
 

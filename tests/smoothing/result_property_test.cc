@@ -63,7 +63,7 @@ Case RandomCase(std::mt19937_64& random, int index) {
   return c;
 }
 
-// Mean ratio by the Eigen reference, invalid elements as 0 (NOTES.md §4).
+// Mean ratio by the Eigen reference, invalid elements as 0 (docs/paper-notes.md#invalid-elements).
 double ReferenceQuality(const Mesh& mesh, ElementId e, bool& valid) {
   mesh_test::Points points;
   for (NodeId n : mesh.element_nodes(e)) {

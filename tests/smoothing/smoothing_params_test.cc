@@ -1,5 +1,6 @@
-// SmoothingParams: the defaults are the paper's Section 4 values (NOTES.md §5) and pass
-// Validate(); each out-of-range field fails with InvalidArgument naming that field.
+// SmoothingParams: the defaults are the paper's Section 4 values (the parameter paragraph before
+// Sec. 4.1, γ from Sec. 4.4) and pass Validate(); each out-of-range field fails with
+// InvalidArgument naming that field.
 
 #include "getme/smoothing/smoothing_params.h"
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "getme/elements/element_quality.h"
 
@@ -12,7 +12,7 @@ Mesh LoadSharedMesh(const std::string& name) {
   const std::string path = std::string(GETME_SHARED_MESHES) + "/mesquite/" + name;
   auto file = formats::ReadVtkFile(path);
   EXPECT_TRUE(file.ok()) << file.status();
-  auto converted = formats::ToMesh(*file);
+  auto converted = formats::GridToMesh(*file);
   EXPECT_TRUE(converted.ok()) << converted.status();
   return std::move(converted->mesh);
 }

@@ -1,5 +1,7 @@
 #include "formats/gmsh/gmsh_element_type.h"
 
+#include "getme/elements/node_orders.h"
+
 namespace getme::formats {
 namespace {
 
@@ -57,9 +59,8 @@ std::optional<GmshElementTypeInfo> GmshElementTypeOfVtk(int vtk_code) {
 }
 
 int GmshNodeOfVtkNode(int gmsh_code, int vtk_node) {
-  if (gmsh_code != 6) return vtk_node;
-  constexpr std::array<int, 6> kPrism = {0, 2, 1, 3, 5, 4};
-  return kPrism[vtk_node];
+  // Gmsh's 6-node prism is the paper's; VTK's wedge lists each triangle the other way round.
+  return gmsh_code == 6 ? kVtkWedgeToPaperPrism[vtk_node] : vtk_node;
 }
 
 }  // namespace getme::formats

@@ -23,7 +23,7 @@ using DimTag = std::pair<int, int>;
 // Each cell's physical groups, calling `visit(cell, dim, tag)` once per group.
 template <typename Visit>
 void ForEachMembership(const MeshDocument& document, Visit&& visit) {
-  const VtkFile& grid = document.grid;
+  const UnstructuredGrid& grid = document.grid;
   const std::int64_t cells = grid.cells.size();
   const GmshExtras* extras = document.gmsh ? &*document.gmsh : nullptr;
   if (extras != nullptr && extras->version_major == 4 && extras->has_entities &&
@@ -40,7 +40,7 @@ void ForEachMembership(const MeshDocument& document, Visit&& visit) {
     }
     return;
   }
-  const VtkDataArray* array = FindArray(grid.cell_data, "gmsh:physical");
+  const DataArray* array = FindArray(grid.cell_data, "gmsh:physical");
   if (array == nullptr || array->components != 1 || array->tuple_count() != cells) return;
   for (std::int64_t c = 0; c < cells; ++c) {
     const double tag = array->AsDouble(c);

@@ -19,15 +19,15 @@ namespace getme::formats {
 namespace {
 
 // An integer cell-data array of the grid's cell count, or null.
-const VtkDataArray* CellArray(const VtkFile& grid, absl::string_view name) {
-  const VtkDataArray* array = FindArray(grid.cell_data, name);
+const DataArray* CellArray(const UnstructuredGrid& grid, absl::string_view name) {
+  const DataArray* array = FindArray(grid.cell_data, name);
   if (array == nullptr || array->components != 1 || array->tuple_count() != grid.cells.size()) {
     return nullptr;
   }
   return array;
 }
 
-int IntValue(const VtkDataArray* array, std::int64_t index) {
+int IntValue(const DataArray* array, std::int64_t index) {
   if (array == nullptr) return 0;
   const double value = array->AsDouble(index);
   if (!std::isfinite(value)) return 0;
@@ -35,7 +35,7 @@ int IntValue(const VtkDataArray* array, std::int64_t index) {
                                      double{std::numeric_limits<int>::max()}));
 }
 
-void ExpandBox(GmshEntity& entity, const VtkDataArray& points, std::int64_t i, bool first) {
+void ExpandBox(GmshEntity& entity, const DataArray& points, std::int64_t i, bool first) {
   const double point[3] = {points.AsDouble(3 * i), points.AsDouble(3 * i + 1),
                            points.AsDouble(3 * i + 2)};
   for (int k = 0; k < 3; ++k) {
@@ -45,14 +45,14 @@ void ExpandBox(GmshEntity& entity, const VtkDataArray& points, std::int64_t i, b
 }
 
 // Entities and each cell's entity from the grid's cell data (see gmsh_layout.h).
-void DeriveEntities(const VtkFile& grid, const std::vector<int>& cell_dims, GmshLayout& layout,
-                    std::vector<int>& physical) {
-  const VtkDataArray* geometrical = CellArray(grid, "gmsh:geometrical");
-  const VtkDataArray* gmsh_physical = CellArray(grid, "gmsh:physical");
-  const VtkDataArray* ref = CellArray(grid, "medit:ref");
-  const VtkDataArray* entity_source =
+void DeriveEntities(const UnstructuredGrid& grid, const std::vector<int>& cell_dims,
+                    GmshLayout& layout, std::vector<int>& physical) {
+  const DataArray* geometrical = CellArray(grid, "gmsh:geometrical");
+  const DataArray* gmsh_physical = CellArray(grid, "gmsh:physical");
+  const DataArray* ref = CellArray(grid, "medit:ref");
+  const DataArray* entity_source =
       geometrical != nullptr ? geometrical : (ref != nullptr ? ref : gmsh_physical);
-  const VtkDataArray* physical_source = gmsh_physical != nullptr ? gmsh_physical : ref;
+  const DataArray* physical_source = gmsh_physical != nullptr ? gmsh_physical : ref;
 
   using Key = std::tuple<int, int, int>;  // dim, entity value, physical value
   absl::flat_hash_map<Key, int> key_index;
@@ -183,7 +183,7 @@ absl::Status CheckExtras(const GmshExtras& extras) {
 }  // namespace
 
 absl::StatusOr<GmshLayout> BuildGmshLayout(const MeshDocument& document, GmshVersion version) {
-  const VtkFile& grid = document.grid;
+  const UnstructuredGrid& grid = document.grid;
   const std::int64_t n = grid.point_count();
   const std::int64_t m = grid.cells.size();
   if (grid.points.components != 3 || grid.points.value_count() != 3 * n) {
@@ -195,7 +195,7 @@ absl::StatusOr<GmshLayout> BuildGmshLayout(const MeshDocument& document, GmshVer
           absl::StrCat("a cell refers to point ", id, ", but there are ", n, " points"));
     }
   }
-  const VtkCells& cells = grid.cells;
+  const GridCells& cells = grid.cells;
   if (static_cast<std::int64_t>(cells.offsets.size()) != m + 1 || cells.offsets.front() != 0 ||
       cells.offsets.back() != static_cast<std::int64_t>(cells.connectivity.size()) ||
       !std::is_sorted(cells.offsets.begin(), cells.offsets.end())) {

@@ -33,16 +33,11 @@
 #include "formats/gmsh/gmsh_cursor.h"
 #include "formats/gmsh/gmsh_element_type.h"
 #include "formats/gmsh/gmsh_tag_index.h"
+#include "formats/quote.h"
 #include "formats/vtk_values.h"
 
 namespace getme::formats {
 namespace {
-
-std::string Quote(absl::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  if (text.size() > kMaxShown) return absl::StrCat("'", text.substr(0, kMaxShown), "…'");
-  return absl::StrCat("'", text, "'");
-}
 
 // Gmsh ends a quoted name at its first inner '"' (ExtractDoubleQuotedString) and MSH has no
 // escape, so a name holding one (or a stray carriage return) could not be written back as read.
@@ -54,7 +49,7 @@ std::optional<std::int64_t> ParseInt(absl::string_view token) {
   return ParseIntegerToken(token, VtkDataType::kInt64);
 }
 
-VtkAttribute MakeAttribute(VtkDataArray array) {
+VtkAttribute MakeAttribute(DataArray array) {
   // 3 and 9 components are Gmsh's vectors and tensors; VTK's SCALARS take at most 4.
   VtkAttributeKind kind = VtkAttributeKind::kField;
   if (array.components == 1) kind = VtkAttributeKind::kScalars;
@@ -250,7 +245,7 @@ class Parser {
     extras().binary = file_type == 1;
     extras().data_size = static_cast<int>(data_size);
     document_.as_read.gmsh_version = is41() ? GmshVersion::k41 : GmshVersion::k22;
-    document_.as_read.encoding = file_type == 1 ? VtkEncoding::kBinary : VtkEncoding::kAscii;
+    document_.as_read.encoding = file_type == 1 ? Encoding::kBinary : Encoding::kAscii;
     document_.grid.encoding = document_.as_read.encoding;
 
     if (file_type == 1) {
@@ -638,7 +633,7 @@ class Parser {
     if (!seen_nodes_) {
       return Error(section_where_, "$Elements comes before $Nodes; elements refer to node tags");
     }
-    VtkCells& cells = document_.grid.cells;
+    GridCells& cells = document_.grid.cells;
     cells.types.reserve(count);
     cells.offsets.reserve(count + 1);
     extras().element_tags.reserve(count);
@@ -695,7 +690,7 @@ class Parser {
                                                    *node_tag, " is not in $Nodes"));
       }
     }
-    VtkCells& cells = document_.grid.cells;
+    GridCells& cells = document_.grid.cells;
     for (int k = 0; k < info.node_count; ++k) {
       cells.connectivity.push_back(nodes[GmshNodeOfVtkNode(info.code, k)]);
     }
@@ -948,12 +943,12 @@ class Parser {
     const std::string base_name = view.string_tags.empty()
                                       ? std::string(on_nodes ? "node data" : "element data")
                                       : view.string_tags.front();
-    VtkDataArray array;
+    DataArray array;
     array.name = UniqueName(base_name, view.integer_tags[0], on_nodes);
     array.type = VtkDataType::kDouble;
     array.components = static_cast<int>(components);
     // Unlisted entries: NaN says "no value"; for "fixed" 0 says "not fixed", as its meaning is
-    // defined by the grid (vtk_mesh.h), where NaN would count as nonzero.
+    // defined by the grid (grid_mesh.h), where NaN would count as nonzero.
     const double missing = base_name == "fixed" ? 0.0 : std::numeric_limits<double>::quiet_NaN();
     array.reals.assign(targets_count * components, missing);
     view.listed.reserve(entries);
@@ -1008,8 +1003,8 @@ class Parser {
   void Finish() {
     const std::int64_t cells = document_.grid.cells.size();
     if (cells == 0) return;
-    VtkDataArray physical{"gmsh:physical", VtkDataType::kInt32, 1, {}, {}};
-    VtkDataArray geometrical{"gmsh:geometrical", VtkDataType::kInt32, 1, {}, {}};
+    DataArray physical{"gmsh:physical", VtkDataType::kInt32, 1, {}, {}};
+    DataArray geometrical{"gmsh:geometrical", VtkDataType::kInt32, 1, {}, {}};
     physical.integers.reserve(cells);
     geometrical.integers.reserve(cells);
     const GmshExtras& ex = extras();

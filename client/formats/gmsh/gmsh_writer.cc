@@ -89,7 +89,7 @@ class Out {
 // One array to write as a view: which grid array, which tags and entries.
 struct ViewPlan {
   bool on_nodes = true;
-  const VtkDataArray* array = nullptr;
+  const DataArray* array = nullptr;
   int component = -1;  // ≥ 0: only this component (an array split into single-component views)
   std::string name;
   const GmshDataView* read = nullptr;  // the section it was read from, if any
@@ -101,7 +101,7 @@ class Writer {
       : document_(document),
         grid_(document.grid),
         v41_(options.gmsh_version == GmshVersion::k41),
-        out_(options.encoding == VtkEncoding::kBinary),
+        out_(options.encoding == Encoding::kBinary),
         layout_(std::move(layout)) {}
 
   absl::StatusOr<std::string> Write() {
@@ -154,7 +154,7 @@ class Writer {
     if (!grid_.field_data.empty()) {
       std::vector<std::string> names;
       for (const VtkAttribute& attribute : grid_.field_data) {
-        for (const VtkDataArray& array : attribute.arrays) names.push_back(array.name);
+        for (const DataArray& array : attribute.arrays) names.push_back(array.name);
       }
       spdlog::warn("Gmsh: MSH files have no field data; {} left out", absl::StrJoin(names, ", "));
     }
@@ -398,8 +398,8 @@ class Writer {
 
   // ---- $NodeData / $ElementData ----
 
-  const VtkDataArray* FindTarget(bool on_nodes, absl::string_view name) const {
-    const VtkDataArray* array = FindArray(on_nodes ? grid_.point_data : grid_.cell_data, name);
+  const DataArray* FindTarget(bool on_nodes, absl::string_view name) const {
+    const DataArray* array = FindArray(on_nodes ? grid_.point_data : grid_.cell_data, name);
     const std::int64_t count = on_nodes ? grid_.point_count() : grid_.cells.size();
     if (array == nullptr || array->components < 1 || array->tuple_count() != count ||
         array->value_count() != count * array->components) {
@@ -409,7 +409,7 @@ class Writer {
   }
 
   absl::Status WriteReadView(const GmshDataView& view) {
-    const VtkDataArray* array = FindTarget(view.on_nodes, view.array_name);
+    const DataArray* array = FindTarget(view.on_nodes, view.array_name);
     if (array == nullptr) return absl::OkStatus();  // removed from the document: not written
     const std::int64_t count = view.on_nodes ? grid_.point_count() : grid_.cells.size();
     for (std::int64_t target : view.listed) {
@@ -428,7 +428,7 @@ class Writer {
       const std::vector<VtkAttribute>& attributes = on_nodes ? grid_.point_data : grid_.cell_data;
       const std::int64_t count = on_nodes ? grid_.point_count() : grid_.cells.size();
       for (const VtkAttribute& attribute : attributes) {
-        for (const VtkDataArray& array : attribute.arrays) {
+        for (const DataArray& array : attribute.arrays) {
           if (!on_nodes && IsTagArray(array.name)) continue;
           if (std::find(written_arrays_.begin(), written_arrays_.end(), &array) !=
               written_arrays_.end()) {
@@ -470,7 +470,7 @@ class Writer {
   }
 
   absl::Status WriteView(const ViewPlan& plan) {
-    const VtkDataArray& array = *plan.array;
+    const DataArray& array = *plan.array;
     const int components = plan.component >= 0 ? 1 : array.components;
     const std::int64_t count = plan.on_nodes ? grid_.point_count() : grid_.cells.size();
     const std::vector<std::int64_t>* listed =
@@ -525,14 +525,14 @@ class Writer {
   }
 
   const MeshDocument& document_;
-  const VtkFile& grid_;
+  const UnstructuredGrid& grid_;
   bool v41_;
   Out out_;
   GmshLayout layout_;
   bool mesh_written_ = false;
   bool physical_names_written_ = false;
   bool entities_written_ = false;
-  std::vector<const VtkDataArray*> written_arrays_;
+  std::vector<const DataArray*> written_arrays_;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
 #include "formats/vtk_values.h"
+#include "getme/elements/node_orders.h"
 
 namespace getme::formats::medit {
 namespace {
@@ -196,9 +197,9 @@ const ElementKind* ElementKindOfCell(int vtk_type) {
 }
 
 int MeditToVtkNode(const ElementKind& kind, int vtk_node) {
-  // MEDIT's prism is Gmsh's (medit_reader.h); VTK's wedge lists each triangle the other way round.
-  static constexpr int kPrism[6] = {0, 2, 1, 3, 5, 4};
-  return &kind == kPrisms ? kPrism[vtk_node] : vtk_node;
+  // MEDIT's prism is the paper's and Gmsh's (medit_reader.h); VTK's wedge lists each triangle the
+  // other way round.
+  return &kind == kPrisms ? kVtkWedgeToPaperPrism[vtk_node] : vtk_node;
 }
 
 const Keyword* FindKeyword(absl::string_view name) {

@@ -14,8 +14,8 @@ constexpr int kVtkVertex = 1;
 
 }  // namespace
 
-absl::StatusOr<CellLayout> PlanCells(const VtkFile& grid) {
-  const VtkCells& cells = grid.cells;
+absl::StatusOr<CellLayout> PlanCells(const UnstructuredGrid& grid) {
+  const GridCells& cells = grid.cells;
   if (cells.offsets.size() != cells.types.size() + 1 || cells.offsets.front() != 0 ||
       cells.offsets.back() != static_cast<std::int64_t>(cells.connectivity.size())) {
     return absl::InvalidArgumentError(
@@ -65,10 +65,11 @@ absl::StatusOr<CellLayout> PlanCells(const VtkFile& grid) {
   return layout;
 }
 
-absl::StatusOr<std::vector<std::int64_t>> CellRefs(const VtkFile& grid, std::string* source) {
+absl::StatusOr<std::vector<std::int64_t>> CellRefs(const UnstructuredGrid& grid,
+                                                   std::string* source) {
   std::vector<std::int64_t> refs(grid.cells.size(), 0);
   source->clear();
-  const VtkDataArray* array = nullptr;
+  const DataArray* array = nullptr;
   for (absl::string_view name : {"medit:ref", "gmsh:physical"}) {
     if ((array = FindArray(grid.cell_data, name)) != nullptr) break;
   }

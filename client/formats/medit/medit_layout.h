@@ -6,7 +6,7 @@
 
 #include "absl/status/statusor.h"
 #include "formats/medit/medit_keywords.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats::medit {
 
@@ -29,11 +29,12 @@ struct CellLayout {
 // Checks the grid's cells (offsets, node counts of each type, point ids in range) and plans the
 // sections. InvalidArgument, naming the cell, for an inconsistent grid or a cell type MEDIT
 // cannot hold (anything but vertex, line, triangle, quad, tetra, hexahedron, wedge, pyramid).
-absl::StatusOr<CellLayout> PlanCells(const VtkFile& grid);
+absl::StatusOr<CellLayout> PlanCells(const UnstructuredGrid& grid);
 
 // The ref of every grid cell: from the cell array "medit:ref", else "gmsh:physical", else 0.
 // `source` is set to the name of the array used ("" for none). InvalidArgument if that array
 // has the wrong length, more than one component, or a value that is not a 32-bit integer.
-absl::StatusOr<std::vector<std::int64_t>> CellRefs(const VtkFile& grid, std::string* source);
+absl::StatusOr<std::vector<std::int64_t>> CellRefs(const UnstructuredGrid& grid,
+                                                   std::string* source);
 
 }  // namespace getme::formats::medit

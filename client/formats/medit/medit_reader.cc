@@ -14,6 +14,7 @@
 #include "absl/strings/str_split.h"
 #include "formats/medit/medit_keywords.h"
 #include "formats/medit/medit_scanner.h"
+#include "formats/quote.h"
 
 namespace getme::formats {
 namespace {
@@ -26,12 +27,6 @@ using medit::Token;
 
 constexpr std::int64_t kMaxRef = std::numeric_limits<std::int32_t>::max();
 constexpr std::int64_t kMinRef = std::numeric_limits<std::int32_t>::min();
-
-std::string Quote(absl::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  if (text.size() > kMaxShown) return absl::StrCat("'", text.substr(0, kMaxShown), "…'");
-  return absl::StrCat("'", text, "'");
-}
 
 absl::Status Error(std::int64_t line, absl::string_view message) {
   return absl::InvalidArgumentError(absl::StrCat("line ", line, ": ", message));
@@ -296,14 +291,14 @@ class Parser {
     return absl::OkStatus();
   }
 
-  static VtkDataArray IntArray(std::string name) {
-    VtkDataArray array;
+  static DataArray IntArray(std::string name) {
+    DataArray array;
     array.name = std::move(name);
     array.type = VtkDataType::kInt;
     return array;
   }
 
-  static VtkAttribute Scalars(VtkDataArray array) {
+  static VtkAttribute Scalars(DataArray array) {
     VtkAttribute attribute{VtkAttributeKind::kScalars, array.name, "default", {}};
     attribute.arrays.push_back(std::move(array));
     return attribute;
@@ -312,16 +307,16 @@ class Parser {
   absl::StatusOr<MeshDocument> Build() {
     MeshDocument document;
     document.format = FileFormat::kMedit;
-    document.as_read.encoding = VtkEncoding::kAscii;
-    VtkFile& grid = document.grid;
+    document.as_read.encoding = Encoding::kAscii;
+    UnstructuredGrid& grid = document.grid;
     grid.points.components = 3;
     grid.points.type = version_ == 1 ? VtkDataType::kFloat : VtkDataType::kDouble;
     MeditExtras extras;
     extras.version = version_;
 
-    VtkDataArray point_refs = IntArray("medit:ref");
-    VtkDataArray cell_refs = IntArray("medit:ref");
-    std::optional<VtkDataArray> fixed;
+    DataArray point_refs = IntArray("medit:ref");
+    DataArray cell_refs = IntArray("medit:ref");
+    std::optional<DataArray> fixed;
     for (Section& section : sections_) {
       switch (section.keyword->role) {
         case KeywordRole::kVertices:
@@ -354,7 +349,7 @@ class Parser {
     return document;
   }
 
-  static void AddCells(const Section& section, VtkCells& cells) {
+  static void AddCells(const Section& section, GridCells& cells) {
     const medit::ElementKind& kind = *section.keyword->element;
     const auto nodes = static_cast<std::size_t>(kind.node_count);
     std::vector<std::int64_t> vtk_nodes(nodes);

@@ -34,8 +34,9 @@ namespace getme::formats {
 // bounds and never reserves more entries than the remaining bytes could hold.
 //
 // Node order. MEDIT's tetrahedron, hexahedron and pyramid have VTK's order (= Gmsh's = the
-// paper's, NOTES.md §1); its prism has Gmsh's order — bottom triangle 0, 1, 2 counter-clockwise
-// seen from the top, 3 above 0 — so VTK's wedge (v0..v5) = MEDIT (m0, m2, m1, m3, m5, m4).
+// paper's, docs/node-orders.md); its prism has Gmsh's order — bottom triangle 0, 1, 2
+// counter-clockwise seen from the top, 3 above 0 — so VTK's wedge (v0..v5) =
+// MEDIT (m0, m2, m1, m3, m5, m4).
 // Evidence (tests/formats/medit, a regular element of each type must read back valid with mean
 // ratio 1):
 // - gmsh 4.8's own MEDIT writer (GModelIO_MESH.cpp) writes tetrahedra and hexahedra without

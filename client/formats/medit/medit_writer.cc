@@ -37,8 +37,8 @@ std::int64_t& Count(EntityCounts& counts, Entity entity) {
   return counts[static_cast<int>(entity)];
 }
 
-absl::Status CheckPoints(const VtkFile& grid) {
-  const VtkDataArray& points = grid.points;
+absl::Status CheckPoints(const UnstructuredGrid& grid) {
+  const DataArray& points = grid.points;
   if (points.components != 3 || IsIntegerType(points.type) || !points.integers.empty() ||
       points.value_count() % 3 != 0) {
     return absl::InvalidArgumentError(
@@ -48,9 +48,9 @@ absl::Status CheckPoints(const VtkFile& grid) {
 }
 
 // Refs of the points: the point array "medit:ref", or 0.
-absl::StatusOr<std::vector<std::int64_t>> PointRefs(const VtkFile& grid) {
+absl::StatusOr<std::vector<std::int64_t>> PointRefs(const UnstructuredGrid& grid) {
   std::vector<std::int64_t> refs(grid.point_count(), 0);
-  const VtkDataArray* array = FindArray(grid.point_data, kRefName);
+  const DataArray* array = FindArray(grid.point_data, kRefName);
   if (array == nullptr) return refs;
   if (array->components != 1 || array->tuple_count() != grid.point_count()) {
     return absl::InvalidArgumentError(absl::StrCat(
@@ -72,8 +72,8 @@ absl::StatusOr<std::vector<std::int64_t>> PointRefs(const VtkFile& grid) {
 
 // The RequiredVertices list (1-based), or nullopt when there is no section to write.
 absl::StatusOr<std::optional<std::vector<std::int64_t>>> RequiredVertices(
-    const VtkFile& grid, const MeditExtras* extras) {
-  const VtkDataArray* fixed = FindArray(grid.point_data, kFixedName);
+    const UnstructuredGrid& grid, const MeditExtras* extras) {
+  const DataArray* fixed = FindArray(grid.point_data, kFixedName);
   if (fixed == nullptr) return std::nullopt;
   if (fixed->components < 1 || fixed->tuple_count() != grid.point_count()) {
     return absl::InvalidArgumentError(absl::StrCat("point data 'fixed' has ", fixed->tuple_count(),
@@ -239,14 +239,14 @@ class MeshWriter {
     }
     std::vector<std::string> dropped;
     for (const VtkAttribute& attribute : grid_.point_data) {
-      for (const VtkDataArray& array : attribute.arrays) {
+      for (const DataArray& array : attribute.arrays) {
         if (array.name != kRefName && array.name != kFixedName) {
           dropped.push_back(absl::StrCat("point data '", array.name, "'"));
         }
       }
     }
     for (const VtkAttribute& attribute : grid_.field_data) {
-      for (const VtkDataArray& array : attribute.arrays) {
+      for (const DataArray& array : attribute.arrays) {
         dropped.push_back(absl::StrCat("field data '", array.name, "'"));
       }
     }
@@ -256,24 +256,24 @@ class MeshWriter {
   }
 
   const MeshDocument& document_;
-  const VtkFile& grid_;
+  const UnstructuredGrid& grid_;
   std::string out_;
 };
 
 // One field of a .sol keyword: a GMF type and the values of one cell array it takes.
 struct SolutionField {
-  const VtkDataArray* array;
+  const DataArray* array;
   int type;
   int first_component;
   int components;
   std::string name;
 };
 
-absl::StatusOr<std::vector<SolutionField>> SolutionFields(const VtkFile& grid,
+absl::StatusOr<std::vector<SolutionField>> SolutionFields(const UnstructuredGrid& grid,
                                                           const std::string& ref_source) {
   std::vector<SolutionField> fields;
   for (const VtkAttribute& attribute : grid.cell_data) {
-    for (const VtkDataArray& array : attribute.arrays) {
+    for (const DataArray& array : attribute.arrays) {
       if (array.name == ref_source) continue;
       if (array.components < 1 || array.tuple_count() != grid.cells.size() ||
           array.value_count() != array.tuple_count() * array.components) {
@@ -319,7 +319,7 @@ std::string LineSafe(absl::string_view name) {
 
 absl::StatusOr<std::string> SerializeMedit(const MeshDocument& document,
                                            const WriteOptions& options) {
-  if (options.encoding == VtkEncoding::kBinary) {
+  if (options.encoding == Encoding::kBinary) {
     return absl::InvalidArgumentError(
         "MEDIT: the binary .meshb variant needs libMeshb, which no Debian package provides; "
         "write the ASCII .mesh instead");
@@ -328,7 +328,7 @@ absl::StatusOr<std::string> SerializeMedit(const MeshDocument& document,
 }
 
 absl::StatusOr<std::string> SerializeMeditSolution(const MeshDocument& document) {
-  const VtkFile& grid = document.grid;
+  const UnstructuredGrid& grid = document.grid;
   absl::StatusOr<CellLayout> layout = medit::PlanCells(grid);
   if (!layout.ok()) return layout.status();
   std::string ref_source;

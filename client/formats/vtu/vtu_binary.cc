@@ -176,7 +176,7 @@ absl::StatusOr<std::string> DecodePayload(absl::string_view payload, const Binar
                       : DecodeUncompressed(payload, framing, expected_bytes);
 }
 
-void DecodeValues(absl::string_view data, VtkDataType type, ByteOrder order, VtkDataArray& array) {
+void DecodeValues(absl::string_view data, VtkDataType type, ByteOrder order, DataArray& array) {
   const VtkDataTypeInfo& info = DataTypeInfo(type);
   const int size = info.binary_size;
   const std::size_t count = data.size() / size;

@@ -6,7 +6,7 @@
 
 #include "absl/status/statusor.h"
 #include "absl/strings/string_view.h"
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats::vtu {
 
@@ -35,7 +35,7 @@ absl::StatusOr<std::string> DecodePayload(absl::string_view payload, const Binar
 
 // Appends the values in `data` (a whole number of `type` values, `type` one of the ten XML
 // storage types of vtu_names.h) to array.integers or array.reals.
-void DecodeValues(absl::string_view data, VtkDataType type, ByteOrder order, VtkDataArray& array);
+void DecodeValues(absl::string_view data, VtkDataType type, ByteOrder order, DataArray& array);
 
 // What the writer emits: UInt64 little-endian headers, blocks of 32 KiB when compressing (VTK's
 // default block size).

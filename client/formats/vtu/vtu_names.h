@@ -4,8 +4,8 @@
 #include <span>
 
 #include "absl/strings/string_view.h"
+#include "formats/unstructured_grid.h"
 #include "formats/vtk_data_type.h"
-#include "formats/vtk_file.h"
 
 namespace getme::formats::vtu {
 

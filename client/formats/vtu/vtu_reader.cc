@@ -13,6 +13,7 @@
 #include "absl/strings/ascii.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "formats/quote.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_values.h"
 #include "formats/vtu/vtu_binary.h"
@@ -29,12 +30,6 @@ constexpr absl::string_view kZlibCompressor = "vtkZLibDataCompressor";
 // VTK's name for the arrays of a dataset that carry no attribute role.
 constexpr absl::string_view kFieldDataName = "FieldData";
 
-std::string Quote(absl::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  if (text.size() > kMaxShown) return absl::StrCat("'", text.substr(0, kMaxShown), "…'");
-  return absl::StrCat("'", text, "'");
-}
-
 absl::string_view NameOf(pugi::xml_node node) { return node.name(); }
 
 bool IsAsciiSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
@@ -50,8 +45,8 @@ struct Expected {
 // One <Piece> before the pieces are merged.
 struct Piece {
   pugi::xml_node node;
-  VtkDataArray points;
-  VtkCells cells;
+  DataArray points;
+  GridCells cells;
   std::vector<VtkAttribute> point_data;
   std::vector<VtkAttribute> cell_data;
 };
@@ -76,7 +71,7 @@ class Reader {
 
     MeshDocument document;
     document.format = FileFormat::kVtkXml;
-    VtkFile& file = document.grid;
+    UnstructuredGrid& file = document.grid;
     if (const pugi::xml_node field = grid.child("FieldData")) {
       if (absl::Status status = ReadFieldData(field, file.field_data); !status.ok()) return status;
     }
@@ -89,7 +84,7 @@ class Reader {
     if (pieces.empty()) return Error(grid, "has no <Piece> element");
     if (absl::Status status = Merge(pieces, file); !status.ok()) return status;
 
-    document.as_read.encoding = any_binary_ ? VtkEncoding::kBinary : VtkEncoding::kAscii;
+    document.as_read.encoding = any_binary_ ? Encoding::kBinary : Encoding::kAscii;
     document.as_read.vtu_layout = any_appended_ ? VtuLayout::kAppended : VtuLayout::kInline;
     document.as_read.vtu_compress = any_binary_ && framing_.zlib;
     file.encoding = document.as_read.encoding;
@@ -262,8 +257,8 @@ class Reader {
 
   // ---- DataArrays ----
 
-  absl::StatusOr<VtkDataArray> ReadArray(pugi::xml_node node, Expected expected) {
-    VtkDataArray array;
+  absl::StatusOr<DataArray> ReadArray(pugi::xml_node node, Expected expected) {
+    DataArray array;
     array.name = node.attribute("Name").value();
     // Not well-formed XML 1.0, which pugixml does not check: such a name could not be written back.
     for (const char c : array.name) {
@@ -347,7 +342,7 @@ class Reader {
     return {};
   }
 
-  absl::Status ReadAscii(pugi::xml_node node, std::int64_t expected_values, VtkDataArray& array) {
+  absl::Status ReadAscii(pugi::xml_node node, std::int64_t expected_values, DataArray& array) {
     const pugi::xml_node text_node = TextChild(node);
     const absl::string_view text = text_node ? text_node.value() : "";
     const bool integer = IsIntegerType(array.type);
@@ -406,7 +401,7 @@ class Reader {
   }
 
   absl::Status ReadBinary(pugi::xml_node node, bool appended, std::int64_t expected_values,
-                          VtkDataArray& array) {
+                          DataArray& array) {
     any_binary_ = true;
     any_appended_ = any_appended_ || appended;
     if (!compressor_.empty() && !framing_.zlib) {
@@ -474,7 +469,7 @@ class Reader {
     if (const pugi::xml_node points = node.child("Points")) {
       const pugi::xml_node array = points.child("DataArray");
       if (!array) return Error(points, "holds no DataArray");
-      absl::StatusOr<VtkDataArray> read =
+      absl::StatusOr<DataArray> read =
           ReadArray(array, {*point_count, CountSource(node, "NumberOfPoints"), 3, false});
       if (!read.ok()) return read.status();
       piece.points = std::move(*read);
@@ -505,7 +500,7 @@ class Reader {
   }
 
   absl::Status ReadCells(pugi::xml_node piece, std::int64_t point_count, std::int64_t cell_count,
-                         VtkCells& cells) {
+                         GridCells& cells) {
     const pugi::xml_node node = piece.child("Cells");
     if (!node) {
       if (cell_count == 0) return absl::OkStatus();
@@ -532,11 +527,11 @@ class Reader {
       if (!found) return Error(node, absl::StrCat("has no DataArray named '", name, "'"));
     }
     const std::string source = CountSource(piece, "NumberOfCells");
-    absl::StatusOr<VtkDataArray> connectivity = ReadArray(connectivity_node, {-1, "", 1, true});
+    absl::StatusOr<DataArray> connectivity = ReadArray(connectivity_node, {-1, "", 1, true});
     if (!connectivity.ok()) return connectivity.status();
-    absl::StatusOr<VtkDataArray> offsets = ReadArray(offsets_node, {cell_count, source, 1, true});
+    absl::StatusOr<DataArray> offsets = ReadArray(offsets_node, {cell_count, source, 1, true});
     if (!offsets.ok()) return offsets.status();
-    absl::StatusOr<VtkDataArray> types = ReadArray(types_node, {cell_count, source, 1, true});
+    absl::StatusOr<DataArray> types = ReadArray(types_node, {cell_count, source, 1, true});
     if (!types.ok()) return types.status();
 
     // VTK XML offsets are where each cell ends; the model's start with 0.
@@ -606,7 +601,7 @@ class Reader {
     bool after_scalars = false;
     bool in_field_group = false;
     for (const pugi::xml_node child : node.children("DataArray")) {
-      absl::StatusOr<VtkDataArray> array = ReadArray(child, {tuples, source, 0, false});
+      absl::StatusOr<DataArray> array = ReadArray(child, {tuples, source, 0, false});
       if (!array.ok()) return array.status();
       if (array->name.empty()) return Error(child, "has no Name");
       std::optional<VtkAttributeKind> kind;
@@ -644,7 +639,7 @@ class Reader {
   absl::Status ReadFieldData(pugi::xml_node node, std::vector<VtkAttribute>& field_data) {
     VtkAttribute field{VtkAttributeKind::kField, std::string(kFieldDataName), "", {}};
     for (const pugi::xml_node child : node.children("DataArray")) {
-      absl::StatusOr<VtkDataArray> array = ReadArray(child, {});
+      absl::StatusOr<DataArray> array = ReadArray(child, {});
       if (!array.ok()) return array.status();
       if (array->name.empty()) return Error(child, "has no Name");
       field.arrays.push_back(std::move(*array));
@@ -656,7 +651,7 @@ class Reader {
   // ---- Merging pieces ----
 
   // Appends `from` to `to`; false if they cannot share one array.
-  static bool AppendArray(const VtkDataArray& from, VtkDataArray& to) {
+  static bool AppendArray(const DataArray& from, DataArray& to) {
     if (from.components != to.components || from.name != to.name ||
         IsIntegerType(from.type) != IsIntegerType(to.type) ||
         (IsIntegerType(from.type) && from.type != to.type)) {
@@ -694,7 +689,7 @@ class Reader {
     return absl::OkStatus();
   }
 
-  absl::Status Merge(std::vector<Piece>& pieces, VtkFile& file) {
+  absl::Status Merge(std::vector<Piece>& pieces, UnstructuredGrid& file) {
     first_piece_ = pieces.front().node;
     file.points = std::move(pieces.front().points);
     file.cells = std::move(pieces.front().cells);

@@ -18,7 +18,7 @@ namespace getme::formats {
 namespace {
 
 // The XML storage type of an array: float promoted to double as the legacy writer does.
-VtkDataType WrittenType(const VtkDataArray& array) {
+VtkDataType WrittenType(const DataArray& array) {
   return vtu::XmlStorageType(TypeKeepingEveryValue(array));
 }
 
@@ -32,9 +32,9 @@ struct Values {
 
 class Writer {
  public:
-  Writer(const VtkFile& file, const WriteOptions& options)
+  Writer(const UnstructuredGrid& file, const WriteOptions& options)
       : file_(file),
-        binary_(options.encoding == VtkEncoding::kBinary),
+        binary_(options.encoding == Encoding::kBinary),
         appended_(binary_ && options.vtu_layout == VtuLayout::kAppended),
         zlib_(binary_ && options.vtu_compress) {}
 
@@ -58,7 +58,7 @@ class Writer {
       return status;
     }
     absl::StrAppend(&out_, "      <Points>\n");
-    const VtkDataArray& points = file_.points;
+    const DataArray& points = file_.points;
     if (absl::Status status =
             WriteArray("Points", WrittenType(points), 3, -1, {points.integers, points.reals});
         !status.ok()) {
@@ -80,7 +80,7 @@ class Writer {
   // ---- Checks ----
 
   absl::Status CheckPoints() const {
-    const VtkDataArray& points = file_.points;
+    const DataArray& points = file_.points;
     if (points.components != 3 || points.type == VtkDataType::kBit) {
       return absl::InvalidArgumentError("Points: expected 3 components of a numeric type");
     }
@@ -88,7 +88,7 @@ class Writer {
   }
 
   absl::Status CheckCells() const {
-    const VtkCells& cells = file_.cells;
+    const GridCells& cells = file_.cells;
     if (cells.offsets.size() != cells.types.size() + 1 || cells.offsets.front() != 0 ||
         cells.offsets.back() != static_cast<std::int64_t>(cells.connectivity.size())) {
       return absl::InvalidArgumentError(
@@ -125,7 +125,7 @@ class Writer {
   // ---- Sections ----
 
   absl::Status WriteCells() {
-    const VtkCells& cells = file_.cells;
+    const GridCells& cells = file_.cells;
     // VTK XML offsets are where each cell ends.
     const std::span<const std::int64_t> ends = std::span(cells.offsets).subspan(1);
     // A line per cell, as the legacy writer's rows.
@@ -144,9 +144,9 @@ class Writer {
 
   // Every array of the grid's field data, and the lookup tables of the point and cell data.
   absl::Status WriteFieldData() {
-    std::vector<std::pair<const VtkDataArray*, std::string>> arrays;
+    std::vector<std::pair<const DataArray*, std::string>> arrays;
     for (const VtkAttribute& attribute : file_.field_data) {
-      for (const VtkDataArray& array : attribute.arrays) {
+      for (const DataArray& array : attribute.arrays) {
         arrays.emplace_back(&array,
                             absl::StrCat("FieldData ", attribute.name, " array ", array.name));
       }
@@ -154,7 +154,7 @@ class Writer {
     for (const auto* data : {&file_.point_data, &file_.cell_data}) {
       for (const VtkAttribute& attribute : *data) {
         if (attribute.kind != VtkAttributeKind::kLookupTable) continue;
-        for (const VtkDataArray& array : attribute.arrays) {
+        for (const DataArray& array : attribute.arrays) {
           arrays.emplace_back(&array, absl::StrCat("LOOKUP_TABLE ", attribute.name));
         }
       }
@@ -173,7 +173,7 @@ class Writer {
     return absl::OkStatus();
   }
 
-  absl::Status CheckNamedArray(const VtkDataArray& array, std::int64_t tuples,
+  absl::Status CheckNamedArray(const DataArray& array, std::int64_t tuples,
                                absl::string_view what) const {
     if (array.name.empty()) return absl::InvalidArgumentError(absl::StrCat(what, ": no name"));
     return CheckArrayForWriting(array, tuples, what);
@@ -212,7 +212,7 @@ class Writer {
     absl::StrAppend(&out_, ">\n");
     for (const VtkAttribute& attribute : attributes) {
       if (attribute.kind == VtkAttributeKind::kLookupTable) continue;
-      for (const VtkDataArray& array : attribute.arrays) {
+      for (const DataArray& array : attribute.arrays) {
         const std::string what = absl::StrCat(element, " ", AttributeKindKeyword(attribute.kind),
                                               " ", attribute.name, " array ", array.name);
         if (absl::Status status = CheckNamedArray(array, tuples, what); !status.ok()) {
@@ -333,7 +333,7 @@ class Writer {
     return absl::OkStatus();
   }
 
-  const VtkFile& file_;
+  const UnstructuredGrid& file_;
   const bool binary_;
   const bool appended_;
   const bool zlib_;

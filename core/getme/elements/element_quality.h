@@ -37,7 +37,8 @@ inline constexpr double kInvalidQuality = -1.0;
 // Mean ratio quality number (Def. 3, eq. 10) clamped to [0, 1], or kInvalidQuality when a node
 // tetrahedron has det ≤ 0: one pass gives both validity and quality. The clamp matters because
 // rounding can give a regular element 1 + 2e-16, which would make the simultaneous weight
-// (1 − q)^η NaN (NOTES.md §4). Generic over the lane type S (lanes.h).
+// (1 − q)^η NaN (docs/paper-notes.md#rounding-of-the-mean-ratio). Generic over the lane type S
+// (lanes.h).
 template <ElementType kType, typename S>
 inline S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
   using Table = ElementTable<kType>;
@@ -69,7 +70,8 @@ inline double MeanRatioOrInvalid(const ElementNodes<kType>& p) {
   return MeanRatioOrInvalid<kType, double>(ToLaneNodes<kType>(p));
 }
 
-// Mean ratio (Def. 3), with an invalid element counted as q = 0 (NOTES.md §4).
+// Mean ratio (Def. 3), with an invalid element counted as q = 0
+// (docs/paper-notes.md#invalid-elements).
 template <ElementType kType>
 inline double MeanRatio(const ElementNodes<kType>& p) {
   return std::max(0.0, MeanRatioOrInvalid<kType>(p));

@@ -1,6 +1,7 @@
 #pragma once
 
-// Compile-time element tables of the paper, 0-based, exactly as restated in NOTES.md §2.
+// Compile-time element tables of the paper (Secs. 2.1–2.2, Def. 3), each index one less than in
+// the paper and nothing else changed (docs/node-orders.md).
 // F (faces, eq. 1), F̄ (dual faces, eq. 2), N (node tetrahedra, eq. 9), W⁻¹ (Def. 3), edges.
 
 #include <array>

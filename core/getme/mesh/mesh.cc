@@ -94,13 +94,17 @@ std::span<const ElementId> Mesh::element_neighbours(ElementId element) const {
   return element_neighbours_->rows.Row(element);
 }
 
+void MeshBuilder::NumberElementsByType(std::array<ElementType, kElementTypeCount> order) {
+  type_order_ = order;
+}
+
+void MeshBuilder::SetErrorNames(const MeshErrorNames* names) { names_ = names; }
+
 void MeshBuilder::Reserve(std::int64_t nodes, std::int64_t elements) {
   mesh_.x_.reserve(nodes);
   mesh_.y_.reserve(nodes);
   mesh_.z_.reserve(nodes);
   mesh_.element_type_.reserve(elements);
-  raw_offsets_.reserve(elements + 1);
-  raw_nodes_.reserve(elements * 6);
 }
 
 NodeId MeshBuilder::AddNode(double x, double y, double z) {
@@ -110,12 +114,22 @@ NodeId MeshBuilder::AddNode(double x, double y, double z) {
   return static_cast<NodeId>(mesh_.x_.size() - 1);
 }
 
-void MeshBuilder::SetFixed(NodeId node, bool fixed) { pending_fixed_.emplace_back(node, fixed); }
+void MeshBuilder::SetFixed(std::int64_t node, bool fixed) {
+  pending_fixed_.emplace_back(node, fixed);
+}
 
 void MeshBuilder::AddElement(ElementType type, std::span<const std::int64_t> nodes) {
+  const std::int64_t element = mesh_.element_count();
   mesh_.element_type_.push_back(type);
-  raw_nodes_.insert(raw_nodes_.end(), nodes.begin(), nodes.end());
-  raw_offsets_.push_back(static_cast<std::int64_t>(raw_nodes_.size()));
+  std::vector<std::int64_t>& staged = staged_nodes_[TypeIndex(type)];
+  const auto expected = static_cast<std::size_t>(NodeCount(type));
+  if (nodes.size() != expected && !wrong_node_count_.has_value()) {
+    wrong_node_count_ =
+        absl::InvalidArgumentError(absl::StrCat("element ", element, " (", TypeName(type), ") has ",
+                                                nodes.size(), " nodes, expected ", expected));
+  }
+  // A wrong count is reported by Build; staging a padded copy keeps the blocks aligned.
+  for (std::size_t k = 0; k < expected; ++k) staged.push_back(k < nodes.size() ? nodes[k] : 0);
 }
 
 namespace {
@@ -143,12 +157,13 @@ absl::Status CheckElementExtent(const Mesh& mesh, std::int64_t element, const st
 }  // namespace
 
 absl::StatusOr<Mesh> MeshBuilder::Build() && {
+  static const MeshErrorNames kDefaultNames;
+  const MeshErrorNames& names = names_ != nullptr ? *names_ : kDefaultNames;
   Mesh& mesh = mesh_;
   const std::int64_t node_count = mesh.node_count();
   const std::int64_t element_count = mesh.element_count();
   if (node_count == 0 || element_count == 0) {
-    return absl::InvalidArgumentError(
-        absl::StrCat("empty mesh: ", node_count, " nodes and ", element_count, " volume elements"));
+    return absl::InvalidArgumentError(names.EmptyMesh(node_count, element_count));
   }
   if (node_count > kMaxIndex || element_count > kMaxIndex) {
     return absl::InvalidArgumentError(absl::StrCat("mesh too large: ", node_count, " nodes, ",
@@ -157,9 +172,8 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   }
   for (std::int64_t i = 0; i < node_count; ++i) {
     if (!std::isfinite(mesh.x_[i]) || !std::isfinite(mesh.y_[i]) || !std::isfinite(mesh.z_[i])) {
-      return absl::InvalidArgumentError(absl::StrCat("node ", i, " has a non-finite coordinate (",
-                                                     mesh.x_[i], ", ", mesh.y_[i], ", ", mesh.z_[i],
-                                                     ")"));
+      return absl::InvalidArgumentError(
+          names.NonFiniteCoordinate(i, mesh.x_[i], mesh.y_[i], mesh.z_[i]));
     }
     const double magnitude =
         std::max({std::abs(mesh.x_[i]), std::abs(mesh.y_[i]), std::abs(mesh.z_[i])});
@@ -172,50 +186,66 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   }
   mesh.fixed_.assign(node_count, 0);
   // Applied in call order, so the last SetFixed of a node wins.
-  for (const auto& [node, fixed] : pending_fixed_) {
+  for (std::size_t entry = 0; entry < pending_fixed_.size(); ++entry) {
+    const auto& [node, fixed] = pending_fixed_[entry];
     if (node < 0 || node >= node_count) {
       return absl::InvalidArgumentError(
-          absl::StrCat("fixed node id ", node, " out of range [0, ", node_count, ")"));
+          names.FixedNodeOutOfRange(static_cast<std::int64_t>(entry), node, node_count));
     }
     mesh.fixed_[node] = fixed ? 1 : 0;
   }
+  if (wrong_node_count_.has_value()) return *wrong_node_count_;
 
-  // Validate connectivity and sort elements into per-type blocks.
+  // Number the elements: in insertion order, or type by type (each type keeps insertion order).
   mesh.block_index_.resize(element_count);
-  for (std::int64_t e = 0; e < element_count; ++e) {
-    const ElementType type = mesh.element_type_[e];
-    const int expected = NodeCount(type);
-    const std::int64_t begin = raw_offsets_[e];
-    const std::int64_t given = raw_offsets_[e + 1] - begin;
-    if (given != expected) {
-      return absl::InvalidArgumentError(absl::StrCat("element ", e, " (", TypeName(type), ") has ",
-                                                     given, " nodes, expected ", expected));
+  {
+    std::array<std::int32_t, kElementTypeCount> added{};
+    std::vector<std::int32_t> index_in_type(element_count);
+    for (std::int64_t e = 0; e < element_count; ++e) {
+      index_in_type[e] = added[TypeIndex(mesh.element_type_[e])]++;
     }
-    ElementBlock& block = mesh.blocks_[TypeIndex(type)];
-    mesh.block_index_[e] = static_cast<std::int32_t>(block.elements.size());
-    block.elements.push_back(static_cast<ElementId>(e));
-    for (int k = 0; k < expected; ++k) {
-      const std::int64_t node = raw_nodes_[begin + k];
-      if (node < 0 || node >= node_count) {
-        return absl::InvalidArgumentError(absl::StrCat("element ", e, " (", TypeName(type),
-                                                       ") node ", k, " has id ", node,
-                                                       ", out of range [0, ", node_count, ")"));
-      }
-      for (int j = 0; j < k; ++j) {
-        if (raw_nodes_[begin + j] == node) {
-          return absl::InvalidArgumentError(
-              absl::StrCat("element ", e, " (", TypeName(type), ") uses node ", node,
-                           " twice (local nodes ", j, " and ", k, ")"));
+    if (type_order_.has_value()) {
+      std::int64_t next = 0;
+      for (const ElementType type : *type_order_) {
+        for (std::int32_t i = 0; i < added[TypeIndex(type)]; ++i, ++next) {
+          mesh.element_type_[next] = type;
+          mesh.block_index_[next] = i;
         }
       }
-      block.nodes.push_back(static_cast<NodeId>(node));
-    }
-    if (auto status = CheckElementExtent(mesh, e, &raw_nodes_[begin], expected); !status.ok()) {
-      return status;
+    } else {
+      mesh.block_index_ = std::move(index_in_type);
     }
   }
-  raw_nodes_ = {};
-  raw_offsets_ = {};
+
+  // Validate connectivity (by element number, so the first fault named is the lowest) and fill
+  // the per-type blocks.
+  for (ElementType type : kAllElementTypes) {
+    ElementBlock& block = mesh.blocks_[TypeIndex(type)];
+    block.elements.resize(staged_nodes_[TypeIndex(type)].size() / NodeCount(type));
+    block.nodes.resize(staged_nodes_[TypeIndex(type)].size());
+  }
+  for (std::int64_t e = 0; e < element_count; ++e) {
+    const ElementType type = mesh.element_type_[e];
+    const int count = NodeCount(type);
+    const std::int64_t index = mesh.block_index_[e];
+    const std::int64_t* staged = staged_nodes_[TypeIndex(type)].data() + index * count;
+    ElementBlock& block = mesh.blocks_[TypeIndex(type)];
+    block.elements[index] = static_cast<ElementId>(e);
+    for (int k = 0; k < count; ++k) {
+      const std::int64_t node = staged[k];
+      if (node < 0 || node >= node_count) {
+        return absl::InvalidArgumentError(names.NodeOutOfRange(e, type, k, node, node_count));
+      }
+      for (int j = 0; j < k; ++j) {
+        if (staged[j] == node) {
+          return absl::InvalidArgumentError(names.RepeatedNode(e, type, node, j, k));
+        }
+      }
+      block.nodes[index * count + k] = static_cast<NodeId>(node);
+    }
+    if (auto status = CheckElementExtent(mesh, e, staged, count); !status.ok()) return status;
+  }
+  staged_nodes_ = {};
 
   std::int64_t corners = 0;
   for (ElementType type : kAllElementTypes) {

@@ -4,12 +4,15 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "absl/status/status.h"
 #include "absl/status/statusor.h"
 #include "getme/elements/element_type.h"
+#include "getme/mesh/mesh_error_names.h"
 
 namespace getme {
 
@@ -112,26 +115,42 @@ class Mesh {
   std::int64_t boundary_face_count_ = 0;
 };
 
-// Collects nodes and elements, then validates them and builds the topology. Errors name the
-// element or node at fault by its insertion index.
+// Collects nodes and elements, then validates them and builds the topology. Every check of a
+// mesh's content happens here, once; errors name the element or node at fault in the words of
+// the caller's MeshErrorNames (by default, by insertion index).
 class MeshBuilder {
  public:
+  // How Build numbers the elements: by default in the order they were added (a file's cell
+  // order); with NumberElementsByType, type by type in `order`, each type in the order added (the
+  // wire's numbering: all tetrahedra, then hexahedra, wedges, pyramids; mesh.proto).
+  void NumberElementsByType(std::array<ElementType, kElementTypeCount> order);
+  // `names` must outlive Build; null restores the defaults.
+  void SetErrorNames(const MeshErrorNames* names);
+
   void Reserve(std::int64_t nodes, std::int64_t elements);
   NodeId AddNode(double x, double y, double z);
-  void SetFixed(NodeId node, bool fixed = true);
-  // nodes: NodeCount(type) node ids in the paper's order (NOTES.md §1).
+  void SetFixed(std::int64_t node, bool fixed = true);
+  // nodes: NodeCount(type) node ids in the paper's order (Fig. 1; docs/node-orders.md).
   void AddElement(ElementType type, std::span<const std::int64_t> nodes);
 
+  std::int64_t node_count() const { return static_cast<std::int64_t>(mesh_.x_.size()); }
+  std::int64_t element_count() const { return mesh_.element_count(); }
+
   // Fails with InvalidArgument on an empty mesh, a node id out of range or repeated within an
-  // element, a non-finite or out-of-range coordinate, more than 2^31-1 nodes or elements, an
-  // element listed twice, or a face shared by more than two elements (mesh_conformity.h).
+  // element, an element with the wrong number of nodes, a non-finite or out-of-range coordinate,
+  // more than 2^31-1 nodes or elements, an element listed twice, or a face shared by more than
+  // two elements (mesh_conformity.h).
   absl::StatusOr<Mesh> Build() &&;
 
  private:
   Mesh mesh_;
+  const MeshErrorNames* names_ = nullptr;
+  std::optional<std::array<ElementType, kElementTypeCount>> type_order_;
   std::vector<std::pair<std::int64_t, bool>> pending_fixed_;
-  std::vector<std::int64_t> raw_nodes_;  // flat, with per-element offsets below
-  std::vector<std::int64_t> raw_offsets_{0};
+  // Node ids per type, NodeCount(type) per element, unchecked until Build.
+  std::array<std::vector<std::int64_t>, kElementTypeCount> staged_nodes_;
+  // The first element added with the wrong number of nodes (reported by Build).
+  std::optional<absl::Status> wrong_node_count_;
 };
 
 }  // namespace getme

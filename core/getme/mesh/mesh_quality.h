@@ -18,7 +18,7 @@ struct TypeQuality {
 };
 
 // Mesh statistics of eq. (12) plus what a user of a mesh tool asks for. Invalid elements count as
-// q = 0 in q_min and q_mean (NOTES.md §4).
+// q = 0 in q_min and q_mean (docs/paper-notes.md#invalid-elements).
 struct MeshQuality {
   std::int64_t elements = 0;
   double q_min = 0.0;

@@ -11,9 +11,10 @@ namespace getme {
 // elements, which are counted in the progress events and the result, never hidden.
 absl::StatusOr<PhaseSummary> RunLaplace(SmoothingContext& context);
 
-// Smart Laplacian smoothing, the baseline of Sec. 4 (NOTES.md §5): a node moves to the mean of
-// its edge neighbours only if the mean quality of its adjacent elements improves and none becomes
-// invalid; sweeps until q_mean of two consecutive sweeps differs by less than laplace_tolerance.
+// Smart Laplacian smoothing, the baseline of Sec. 4 (docs/paper-notes.md#smart-laplace): a node
+// moves to the mean of its edge neighbours only if the mean quality of its adjacent elements
+// improves and none becomes invalid; sweeps until q_mean of two consecutive sweeps differs by less
+// than laplace_tolerance.
 absl::StatusOr<PhaseSummary> RunSmartLaplace(SmoothingContext& context);
 
 }  // namespace getme

@@ -47,7 +47,8 @@ absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
     if (last) break;
   }
 
-  // Hand on the best-q_mean state, not merely the last one (NOTES.md §5).
+  // Hand on the best-q_mean state, not merely the last one
+  // (docs/paper-notes.md#simultaneous-stop-rule).
   if (best_iteration != summary.iterations) {
     best_position.CopyTo(mesh);
     context.RefreshQuality();

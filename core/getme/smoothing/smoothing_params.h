@@ -15,7 +15,7 @@ enum class Method {
   kSimultaneous,  // Sec. 3.1 only
   kSequential,    // Sec. 3.2 only
   kWarpage,       // GETMe, then the sequential substep selecting by q_γ (Sec. 4.4)
-  kSmartLaplace,  // baseline of Sec. 4 (NOTES.md §5)
+  kSmartLaplace,  // baseline of Sec. 4 (docs/paper-notes.md#smart-laplace)
   kLaplace,       // plain Laplace: may invert elements, reported as invalid
 };
 
@@ -50,11 +50,12 @@ struct SmoothingParams {
   double penalty_invalid = 0.01;   // Δπ_i: the transformation produced an invalid element
   double penalty_repeat = 0.0005;  // Δπ_r: the same element was picked in the previous step
   double penalty_success = 0.01;   // Δπ_s: subtracted after a successful transformation
-  // The paper leaves the stop rule open (NOTES.md §5). Here: stop when the best q_min of the
-  // phase rose by less than sequential_improvement_tolerance over the last
-  // sequential_stall_iterations picks (0: max(1000, elements)), or at sequential_max_iterations
-  // picks (0: 50 × elements). The best-q_min state seen is handed on: q_min oscillates as
-  // neighbours take turns being the worst element. Measured trade-offs in docs/quality.md.
+  // The paper leaves the stop rule open (Sec. 3.2, Step 4;
+  // docs/paper-notes.md#sequential-stop-rule). Here: stop when the best q_min of the phase rose by
+  // less than sequential_improvement_tolerance over the last sequential_stall_iterations picks
+  // (0: max(1000, elements)), or at sequential_max_iterations picks (0: 50 × elements). The
+  // best-q_min state seen is handed on: q_min oscillates as neighbours take turns being the worst
+  // element. Measured trade-offs in docs/quality.md.
   std::int64_t sequential_stall_iterations = 0;
   std::int64_t sequential_max_iterations = 0;
   double sequential_improvement_tolerance = 1e-3;
@@ -72,7 +73,7 @@ struct SmoothingParams {
   // --- Warpage variant (Sec. 4.4) ---
   double gamma = 0.25;  // γ of q_γ = min(q, γ(1 − w/2))
 
-  // --- Laplace baselines (NOTES.md §5) ---
+  // --- Laplace baselines (Secs. 1 and 4; docs/paper-notes.md#smart-laplace) ---
   double laplace_tolerance = 1e-6;
   std::int64_t laplace_max_iterations = 1000;
 

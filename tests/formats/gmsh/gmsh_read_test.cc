@@ -12,7 +12,7 @@
 
 #include "formats/gmsh/gmsh_groups.h"
 #include "formats/gmsh/gmsh_reader.h"
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "getme/elements/element_quality.h"
 #include "gmsh_test_util.h"
 
@@ -38,7 +38,7 @@ std::map<std::int64_t, std::int64_t> IndexOf(const std::vector<std::int64_t>& ta
 void ExpectAsGmshReadsIt(const MeshDocument& document, const GmshExpected& expected) {
   ASSERT_TRUE(document.gmsh.has_value());
   const GmshExtras& extras = *document.gmsh;
-  const VtkFile& grid = document.grid;
+  const UnstructuredGrid& grid = document.grid;
   ASSERT_EQ(grid.point_count(), static_cast<std::int64_t>(expected.nodes.size()));
   const auto node_index = IndexOf(extras.node_tags);
   for (const auto& node : expected.nodes) {
@@ -51,8 +51,8 @@ void ExpectAsGmshReadsIt(const MeshDocument& document, const GmshExpected& expec
   }
   ASSERT_EQ(grid.cells.size(), static_cast<std::int64_t>(expected.elements.size()));
   const auto element_index = IndexOf(extras.element_tags);
-  const VtkDataArray* geometrical = FindArray(grid.cell_data, "gmsh:geometrical");
-  const VtkDataArray* physical = FindArray(grid.cell_data, "gmsh:physical");
+  const DataArray* geometrical = FindArray(grid.cell_data, "gmsh:geometrical");
+  const DataArray* physical = FindArray(grid.cell_data, "gmsh:physical");
   ASSERT_NE(geometrical, nullptr);
   ASSERT_NE(physical, nullptr);
   // The physical groups each entity belongs to.
@@ -118,7 +118,7 @@ TEST_P(GmshWrittenTest, HybridReadsAsGmshReadsIt) {
   ExpectAsGmshReadsIt(*document, expected);
   EXPECT_EQ(document->format, FileFormat::kGmsh);
   const bool binary = GetParam().ends_with("binary");
-  EXPECT_EQ(document->as_read.encoding, binary ? VtkEncoding::kBinary : VtkEncoding::kAscii);
+  EXPECT_EQ(document->as_read.encoding, binary ? Encoding::kBinary : Encoding::kAscii);
   EXPECT_EQ(document->as_read.gmsh_version,
             GetParam().starts_with("41") ? GmshVersion::k41 : GmshVersion::k22);
 }
@@ -138,7 +138,7 @@ TEST_P(GmshWrittenTest, ViewsBecomeArraysNamedByTheirStringTag) {
     const std::string name =
         data.step == 0 ? data.name : data.name + " [step " + std::to_string(data.step) + "]";
     SCOPED_TRACE(name + " tag " + std::to_string(data.tag));
-    const VtkDataArray* array =
+    const DataArray* array =
         FindArray(data.on_nodes ? document->grid.point_data : document->grid.cell_data, name);
     ASSERT_NE(array, nullptr);
     ASSERT_EQ(array->components, data.components);
@@ -150,7 +150,7 @@ TEST_P(GmshWrittenTest, ViewsBecomeArraysNamedByTheirStringTag) {
     if (data.name == "fixed" && data.step == 0) fixed_listed.insert(target);
   }
   // Nodes the "fixed" view does not list are not fixed.
-  const VtkDataArray* fixed = FindArray(document->grid.point_data, "fixed");
+  const DataArray* fixed = FindArray(document->grid.point_data, "fixed");
   ASSERT_NE(fixed, nullptr);
   EXPECT_EQ(fixed_listed.size(), 3u);
   for (std::int64_t i = 0; i < document->grid.point_count(); ++i) {
@@ -174,7 +174,7 @@ TEST_P(GmshWrittenTest, RegularElementsHaveMeanRatioOne) {
   ASSERT_TRUE(document.ok()) << document.status();
   ExpectAsGmshReadsIt(*document,
                       ReadGmshExpected(GmshInput("regular_" + GetParam() + ".expected")));
-  absl::StatusOr<VtkMesh> mesh = ToMesh(document->grid);
+  absl::StatusOr<GridMesh> mesh = GridToMesh(document->grid);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   ASSERT_EQ(mesh->mesh.element_count(), 4);
   std::set<ElementType> types;
@@ -239,7 +239,7 @@ TEST_P(MeshioWrittenTest, ReadsAsMeshioReadsIt) {
   const absl::StatusOr<MeshDocument> document =
       ParseGmshFile(GmshInput("meshio_" + GetParam() + ".msh"));
   ASSERT_TRUE(document.ok()) << document.status();
-  const VtkFile& grid = document->grid;
+  const UnstructuredGrid& grid = document->grid;
   std::map<std::array<double, 3>, std::int64_t> by_position;
   for (std::int64_t i = 0; i < grid.point_count(); ++i) {
     by_position[{grid.points.reals[3 * i], grid.points.reals[3 * i + 1],
@@ -247,9 +247,9 @@ TEST_P(MeshioWrittenTest, ReadsAsMeshioReadsIt) {
   }
   std::vector<std::int64_t> meshio_point;  // meshio index → our index
   std::int64_t cell = 0;
-  const VtkDataArray* physical = FindArray(grid.cell_data, "gmsh:physical");
-  const VtkDataArray* geometrical = FindArray(grid.cell_data, "gmsh:geometrical");
-  const VtkDataArray* fixed = FindArray(grid.point_data, "fixed");
+  const DataArray* physical = FindArray(grid.cell_data, "gmsh:physical");
+  const DataArray* geometrical = FindArray(grid.cell_data, "gmsh:geometrical");
+  const DataArray* fixed = FindArray(grid.point_data, "fixed");
   ASSERT_TRUE(physical != nullptr && geometrical != nullptr && fixed != nullptr);
   std::istringstream lines(testing::ReadBytes(GmshInput("meshio_" + GetParam() + ".expected")));
   std::string line;

@@ -32,7 +32,7 @@ using testing::ParseGmshFile;
 using testing::ReadBytes;
 using testing::SameBits;
 
-MeshDocument FromVtk(const VtkFile& file) {
+MeshDocument FromVtk(const UnstructuredGrid& file) {
   MeshDocument document;
   document.grid = file;
   return document;
@@ -49,8 +49,8 @@ absl::StatusOr<MeshDocument> WriteAndParse(const MeshDocument& document,
 void ExpectSameArraysByName(const std::vector<VtkAttribute>& expected,
                             const std::vector<VtkAttribute>& actual) {
   for (const VtkAttribute& attribute : expected) {
-    for (const VtkDataArray& array : attribute.arrays) {
-      const VtkDataArray* read = FindArray(actual, array.name);
+    for (const DataArray& array : attribute.arrays) {
+      const DataArray* read = FindArray(actual, array.name);
       ASSERT_NE(read, nullptr) << array.name;
       ASSERT_EQ(read->components, array.components) << array.name;
       ASSERT_EQ(read->value_count(), array.value_count()) << array.name;
@@ -76,7 +76,7 @@ TEST(GmshRoundTrip, VtkMeshesKeepPointsCellsAndArraysInEveryVariant) {
   const std::vector<std::string> sources = VtkSources();
   ASSERT_GE(sources.size(), 18u);
   for (const std::string& path : sources) {
-    const absl::StatusOr<VtkFile> file = ReadVtkFile(path);
+    const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(path);
     ASSERT_TRUE(file.ok()) << file.status();
     const MeshDocument document = FromVtk(*file);
     for (const GmshVariant& variant : AllGmshVariants()) {
@@ -168,8 +168,8 @@ INSTANTIATE_TEST_SUITE_P(GmshWritten, GmshConversion,
 
 // ---- Grids without Gmsh extras ----
 
-VtkFile TwoTetsAndATriangle() {
-  VtkFile file;
+UnstructuredGrid TwoTetsAndATriangle() {
+  UnstructuredGrid file;
   file.points.type = VtkDataType::kDouble;
   file.points.components = 3;
   file.points.reals = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
@@ -180,7 +180,7 @@ VtkFile TwoTetsAndATriangle() {
 }
 
 VtkAttribute IntScalars(const std::string& name, std::vector<std::int64_t> values) {
-  VtkDataArray array{name, VtkDataType::kInt32, 1, {}, std::move(values)};
+  DataArray array{name, VtkDataType::kInt32, 1, {}, std::move(values)};
   return VtkAttribute{VtkAttributeKind::kScalars, name, "default", {std::move(array)}};
 }
 
@@ -237,7 +237,7 @@ TEST(GmshWithoutExtras, NoTagsGiveOneEntityPerDimension) {
 
 TEST(GmshWithoutExtras, ArraysOfOtherComponentCountsAreSplit) {
   MeshDocument document = FromVtk(TwoTetsAndATriangle());
-  VtkDataArray pair{"pair", VtkDataType::kDouble, 2, {1, 2, 3, 4, 5, 6}, {}};
+  DataArray pair{"pair", VtkDataType::kDouble, 2, {1, 2, 3, 4, 5, 6}, {}};
   document.grid.cell_data.push_back(
       VtkAttribute{VtkAttributeKind::kField, "f", "", {std::move(pair)}});
   const absl::StatusOr<MeshDocument> read = WriteAndParse(document, WriteOptions{});
@@ -329,7 +329,7 @@ TEST(GmshWarnings, RawSectionsOfAnotherVariantAreNamed) {
   }
   WarningCapture capture;
   WriteOptions options = document->as_read;
-  options.encoding = VtkEncoding::kBinary;
+  options.encoding = Encoding::kBinary;
   const absl::StatusOr<std::string> bytes = SerializeGmsh(*document, options);
   ASSERT_TRUE(bytes.ok());
   EXPECT_NE(capture.Text().find("section $Periodic of the input (MSH 4.1 ASCII) cannot be "
@@ -396,7 +396,7 @@ std::string Summary(const MeshDocument& document) {
   for (const bool on_nodes : {true, false}) {
     for (const VtkAttribute& attribute :
          on_nodes ? document.grid.point_data : document.grid.cell_data) {
-      for (const VtkDataArray& array : attribute.arrays) {
+      for (const DataArray& array : attribute.arrays) {
         if (array.name.starts_with("gmsh:")) continue;
         // Entries: all points / cells, or those the view read from the file listed.
         std::int64_t entries = array.tuple_count();
@@ -418,12 +418,12 @@ std::string Summary(const MeshDocument& document) {
 
 TEST(GmshOutputs, WriteFilesForGmshToRead) {
   std::filesystem::create_directories(testing::GmshOutputDirectory());
-  const absl::StatusOr<VtkFile> vtk =
+  const absl::StatusOr<UnstructuredGrid> vtk =
       ReadVtkFile(std::string(GETME_TEST_DATA) + "/hybrid-example.vtk");
   ASSERT_TRUE(vtk.ok()) << vtk.status();
   MeshDocument from_vtk = FromVtk(*vtk);
   // A "fixed" array on every third point, as the CLI's users mark fixed nodes.
-  VtkDataArray fixed{"fixed", VtkDataType::kInt32, 1, {}, {}};
+  DataArray fixed{"fixed", VtkDataType::kInt32, 1, {}, {}};
   for (std::int64_t i = 0; i < vtk->point_count(); ++i) fixed.integers.push_back(i % 3 == 0);
   from_vtk.grid.point_data.push_back(
       VtkAttribute{VtkAttributeKind::kScalars, "fixed", "default", {fixed}});

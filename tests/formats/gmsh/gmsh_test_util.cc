@@ -14,12 +14,12 @@ namespace getme::formats::testing {
 std::vector<GmshVariant> AllGmshVariants() {
   std::vector<GmshVariant> variants;
   for (const GmshVersion version : {GmshVersion::k22, GmshVersion::k41}) {
-    for (const VtkEncoding encoding : {VtkEncoding::kAscii, VtkEncoding::kBinary}) {
+    for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
       WriteOptions options;
       options.gmsh_version = version;
       options.encoding = encoding;
       variants.push_back({std::string(version == GmshVersion::k22 ? "22" : "41") +
-                              (encoding == VtkEncoding::kAscii ? "_ascii" : "_binary"),
+                              (encoding == Encoding::kAscii ? "_ascii" : "_binary"),
                           options});
     }
   }
@@ -140,12 +140,12 @@ namespace {
 
 void ExpectSameArrays(const std::vector<VtkAttribute>& expected,
                       const std::vector<VtkAttribute>& actual, const std::string& where) {
-  std::vector<const VtkDataArray*> a, b;
+  std::vector<const DataArray*> a, b;
   for (const VtkAttribute& attribute : expected) {
-    for (const VtkDataArray& array : attribute.arrays) a.push_back(&array);
+    for (const DataArray& array : attribute.arrays) a.push_back(&array);
   }
   for (const VtkAttribute& attribute : actual) {
-    for (const VtkDataArray& array : attribute.arrays) b.push_back(&array);
+    for (const DataArray& array : attribute.arrays) b.push_back(&array);
   }
   ASSERT_EQ(a.size(), b.size()) << where;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -164,8 +164,8 @@ void ExpectSameArrays(const std::vector<VtkAttribute>& expected,
 
 void ExpectSameDocument(const MeshDocument& expected, const MeshDocument& actual,
                         bool with_extras) {
-  const VtkFile& a = expected.grid;
-  const VtkFile& b = actual.grid;
+  const UnstructuredGrid& a = expected.grid;
+  const UnstructuredGrid& b = actual.grid;
   ASSERT_EQ(a.point_count(), b.point_count());
   for (std::int64_t k = 0; k < 3 * a.point_count(); ++k) {
     ASSERT_TRUE(SameBits(a.points.AsDouble(k), b.points.AsDouble(k)))

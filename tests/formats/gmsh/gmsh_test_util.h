@@ -62,7 +62,7 @@ GmshExpected ReadGmshExpected(const std::string& path);
 
 // The tests' own statement of the node-order convention, independent of the reader's table:
 // VTK code of a Gmsh type, and the Gmsh nodes of an element in VTK's order (the prism mirrored:
-// VTK (v0..v5) = Gmsh (g0, g2, g1, g3, g5, g4), NOTES.md §1).
+// VTK (v0..v5) = Gmsh (g0, g2, g1, g3, g5, g4), docs/node-orders.md).
 int VtkCodeOfGmshType(int gmsh_type);
 std::vector<std::int64_t> InVtkOrder(int gmsh_type, const std::vector<std::int64_t>& gmsh_nodes);
 

@@ -9,7 +9,7 @@ usage: make_gmsh_inputs.py OUTPUT_DIR
   and coordinates that need all 17 digits.
 - multi_41_{ascii,binary}.msh: Gmsh 4.1 with one surface in two physical groups.
 - regular_{22,41}_{ascii,binary}.msh: one regular tet, hex, pyramid and prism (unit edges, each
-  oriented as NOTES.md §1 orders the paper's nodes, which Gmsh's order is claimed to be).
+  oriented as docs/node-orders.md orders the paper's nodes, which Gmsh's order is claimed to be).
 - views_{22,41}_{ascii,binary}.msh: the hybrid mesh and Gmsh views: "fixed" on some nodes at two
   time steps, a 3-component "velocity" on all elements.
 - meshio_{22,41}_{ascii,binary}.msh: the hybrid mesh written by meshio.
@@ -190,7 +190,8 @@ def regular_elements():
         4: [(0, 0, 0), (1, 0, 0), (0.5, s3 / 2, 0), (0.5, s3 / 6, math.sqrt(2.0 / 3.0))],
         5: [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)],
         7: [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0.5, 0.5, math.sqrt(2.0) / 2)],
-        # Paper / NOTES.md §1: bottom triangle counter-clockwise seen from the top, 3 above 0.
+        # Paper order (docs/node-orders.md): bottom triangle counter-clockwise seen from the top,
+        # 3 above 0.
         6: [(0, 0, 0), (1, 0, 0), (0.5, s3 / 2, 0), (0, 0, 1), (1, 0, 1), (0.5, s3 / 2, 1)],
     }
 

@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "formats/grid_mesh.h"
 #include "formats/medit/medit_reader.h"
-#include "formats/vtk_mesh.h"
 #include "getme/elements/element_quality.h"
 #include "medit_test_util.h"
 #include "vtk_test_util.h"
@@ -27,7 +27,7 @@ absl::StatusOr<MeshDocument> ReadFixture(const std::string& name, ExpectedConten
 }
 
 void ExpectAllElementsValid(const MeshDocument& document, std::int64_t expected_elements) {
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(document.grid);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(document.grid);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   ASSERT_EQ(mesh->mesh.element_count(), expected_elements);
   for (ElementId element = 0; element < mesh->mesh.element_count(); ++element) {
@@ -49,7 +49,7 @@ TEST(MeditContent, HybridWrittenByMeshio) {
   EXPECT_EQ(document->grid.points.type, VtkDataType::kDouble);
   // Two of each volume type, all placed regular: the prisms prove the mirror once more.
   ExpectAllElementsValid(*document, 8);
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(document->grid);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(document->grid);
   ASSERT_TRUE(mesh.ok());
   for (const ElementType type : {ElementType::kTetrahedron, ElementType::kHexahedron,
                                  ElementType::kPrism, ElementType::kPyramid}) {
@@ -103,7 +103,7 @@ TEST(MeditContent, RequiredVerticesBecomeFixed) {
   EXPECT_EQ(testing::FixedPoints(document->grid), (std::vector<std::int64_t>{1, 3}));
   ASSERT_TRUE(document->medit->required_vertices.has_value());
   EXPECT_EQ(*document->medit->required_vertices, (std::vector<std::int64_t>{4, 2}));
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(document->grid);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(document->grid);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   EXPECT_FALSE(mesh->mesh.is_fixed(0));
   EXPECT_TRUE(mesh->mesh.is_fixed(1));

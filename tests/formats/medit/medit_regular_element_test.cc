@@ -1,6 +1,7 @@
 // MEDIT's node order per element type, established with files written by gmsh's and meshio's
-// own MEDIT writers: a regular element of each type (unit edges, oriented per NOTES.md §1) must
-// read back valid with mean ratio 1 through ToMesh and the core kernels.
+// own MEDIT writers: a regular element of each type (unit edges, oriented per
+// docs/node-orders.md) must read back valid with mean ratio 1 through GridToMesh and the core
+// kernels.
 
 #include <gtest/gtest.h>
 
@@ -8,8 +9,8 @@
 #include <ostream>
 #include <string>
 
+#include "formats/grid_mesh.h"
 #include "formats/medit/medit_reader.h"
-#include "formats/vtk_mesh.h"
 #include "getme/elements/element_quality.h"
 #include "medit_test_util.h"
 #include "vtk_test_util.h"
@@ -48,7 +49,7 @@ TEST_P(MeditRegularElementTest, ReadsBackValidWithMeanRatioOne) {
   ASSERT_EQ(document->grid.cells.size(), 1);
   EXPECT_EQ(document->grid.cells.types[0], param.vtk_type);
 
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(document->grid);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(document->grid);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   ASSERT_EQ(mesh->mesh.element_count(), 1);
   EXPECT_EQ(mesh->mesh.type(0), param.element_type);
@@ -100,7 +101,7 @@ TEST(MeditPrismOrder, PrismInVtkOrderReadsBackInverted) {
   text.replace(text.find("1 2 3 4 5 6 0"), 13, "1 3 2 4 6 5 0");
   const absl::StatusOr<MeshDocument> document = ParseMedit(text);
   ASSERT_TRUE(document.ok()) << document.status();
-  const absl::StatusOr<VtkMesh> mesh = ToMesh(document->grid);
+  const absl::StatusOr<GridMesh> mesh = GridToMesh(document->grid);
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const auto nodes =
       GatherNodes<ElementType::kPrism>(mesh->mesh, mesh->mesh.element_nodes(0).data());

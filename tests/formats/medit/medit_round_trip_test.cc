@@ -41,13 +41,13 @@ std::int64_t SectionCount(const std::string& text, const std::string& keyword) {
   return -1;
 }
 
-std::int64_t CellsOfType(const VtkCells& cells, int type) {
+std::int64_t CellsOfType(const GridCells& cells, int type) {
   std::int64_t count = 0;
   for (const std::uint8_t t : cells.types) count += t == type ? 1 : 0;
   return count;
 }
 
-void ExpectSamePointBits(const VtkDataArray& expected, const VtkDataArray& actual) {
+void ExpectSamePointBits(const DataArray& expected, const DataArray& actual) {
   ASSERT_EQ(expected.reals.size(), actual.reals.size());
   for (std::size_t i = 0; i < expected.reals.size(); ++i) {
     ASSERT_EQ(std::bit_cast<std::uint64_t>(expected.reals[i]),
@@ -57,7 +57,7 @@ void ExpectSamePointBits(const VtkDataArray& expected, const VtkDataArray& actua
 }
 
 MeshDocument FromVtk(const std::string& path) {
-  const absl::StatusOr<VtkFile> file = ReadVtkFile(path);
+  const absl::StatusOr<UnstructuredGrid> file = ReadVtkFile(path);
   EXPECT_TRUE(file.ok()) << file.status();
   MeshDocument document;
   document.format = FileFormat::kVtkLegacy;
@@ -76,7 +76,7 @@ class MeditVtkRoundTripTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MeditVtkRoundTripTest, PointsBitIdenticalCellsGroupedByKind) {
   const MeshDocument document = FromVtk(GetParam());
-  const VtkFile& vtk = document.grid;
+  const UnstructuredGrid& vtk = document.grid;
   ASSERT_GT(vtk.cells.size(), 0);
   const absl::StatusOr<std::string> text = SerializeMedit(document, WriteOptions{});
   ASSERT_TRUE(text.ok()) << text.status();
@@ -97,7 +97,7 @@ TEST_P(MeditVtkRoundTripTest, PointsBitIdenticalCellsGroupedByKind) {
   const absl::StatusOr<MeshDocument> parsed = ParseMedit(*text);
   ASSERT_TRUE(parsed.ok()) << parsed.status();
   ExpectSamePointBits(vtk.points, parsed->grid.points);
-  const VtkCells expected = Reordered(vtk.cells, GroupedCellOrder(vtk.cells));
+  const GridCells expected = Reordered(vtk.cells, GroupedCellOrder(vtk.cells));
   EXPECT_EQ(parsed->grid.cells.types, expected.types);
   EXPECT_EQ(parsed->grid.cells.offsets, expected.offsets);
   EXPECT_EQ(parsed->grid.cells.connectivity, expected.connectivity);
@@ -265,7 +265,7 @@ TEST(MeditExtrasRoundTrip, FreeFormatReadsAsTheCanonicalLayout) {
 TEST(MeditExtrasRoundTrip, ChangedFixedSetIsWrittenAscending) {
   absl::StatusOr<MeshDocument> document = ParseMedit(kWithExtras);
   ASSERT_TRUE(document.ok()) << document.status();
-  VtkDataArray* fixed = FindArray(document->grid.point_data, "fixed");
+  DataArray* fixed = FindArray(document->grid.point_data, "fixed");
   ASSERT_NE(fixed, nullptr);
   fixed->integers[4] = 1;  // vertex 5 joins 4, 1, 2
   const absl::StatusOr<std::string> text = SerializeMedit(*document, document->as_read);
@@ -296,7 +296,7 @@ void WriteForMeshio(const MeshDocument& document, const std::string& name) {
   const absl::StatusOr<std::string> text = SerializeMedit(document, WriteOptions{});
   ASSERT_TRUE(text.ok()) << text.status();
   testing::WriteText(FixturePath(name + ".mesh"), *text);
-  const VtkFile& grid = document.grid;
+  const UnstructuredGrid& grid = document.grid;
   const std::vector<std::int64_t> order = GroupedCellOrder(grid.cells);
   ExpectedContent expected;
   expected.points = grid.points.reals;

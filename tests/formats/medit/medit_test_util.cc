@@ -115,7 +115,7 @@ void WriteExpected(const std::string& path, const ExpectedContent& expected) {
   WriteText(path, out.str());
 }
 
-void ExpectContent(const ExpectedContent& expected, const VtkFile& grid) {
+void ExpectContent(const ExpectedContent& expected, const UnstructuredGrid& grid) {
   ASSERT_EQ(grid.points.components, 3);
   ASSERT_EQ(grid.points.reals.size(), expected.points.size());
   for (std::size_t i = 0; i < expected.points.size(); ++i) {
@@ -137,7 +137,7 @@ void ExpectContent(const ExpectedContent& expected, const VtkFile& grid) {
 
 std::vector<std::int64_t> IntegerValues(const std::vector<VtkAttribute>& attributes,
                                         const std::string& name) {
-  const VtkDataArray* array = FindArray(attributes, name);
+  const DataArray* array = FindArray(attributes, name);
   if (array == nullptr) return {};
   std::vector<std::int64_t> values;
   for (std::int64_t i = 0; i < array->value_count(); ++i) {
@@ -146,9 +146,9 @@ std::vector<std::int64_t> IntegerValues(const std::vector<VtkAttribute>& attribu
   return values;
 }
 
-std::vector<std::int64_t> FixedPoints(const VtkFile& grid) {
+std::vector<std::int64_t> FixedPoints(const UnstructuredGrid& grid) {
   std::vector<std::int64_t> fixed;
-  const VtkDataArray* array = FindArray(grid.point_data, "fixed");
+  const DataArray* array = FindArray(grid.point_data, "fixed");
   if (array == nullptr) return fixed;
   for (std::int64_t point = 0; point < array->tuple_count(); ++point) {
     for (int c = 0; c < array->components; ++c) {
@@ -161,7 +161,7 @@ std::vector<std::int64_t> FixedPoints(const VtkFile& grid) {
   return fixed;
 }
 
-std::vector<std::int64_t> GroupedCellOrder(const VtkCells& cells) {
+std::vector<std::int64_t> GroupedCellOrder(const GridCells& cells) {
   std::vector<int> kinds;
   for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
     const int type = cells.types[cell];
@@ -178,8 +178,8 @@ std::vector<std::int64_t> GroupedCellOrder(const VtkCells& cells) {
   return order;
 }
 
-VtkCells Reordered(const VtkCells& cells, const std::vector<std::int64_t>& order) {
-  VtkCells result;
+GridCells Reordered(const GridCells& cells, const std::vector<std::int64_t>& order) {
+  GridCells result;
   for (const std::int64_t cell : order) {
     result.Add(
         cells.types[cell],

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/vtk_file.h"
+#include "formats/unstructured_grid.h"
 
 namespace getme::formats::testing {
 
@@ -17,7 +17,7 @@ struct ExpectedContent {
   double tolerance = 0.0;  // on coordinates; 0 = bit for bit
   std::vector<double> points;
   std::vector<std::int64_t> point_refs;
-  VtkCells cells;  // VTK codes and node order, file order
+  GridCells cells;  // VTK codes and node order, file order
   std::vector<std::int64_t> cell_refs;
 };
 
@@ -26,18 +26,18 @@ bool ReadExpected(const std::string& path, ExpectedContent* expected, std::strin
 void WriteExpected(const std::string& path, const ExpectedContent& expected);
 
 // Asserts (gtest) that `grid` holds the expected points, cells and "medit:ref" arrays.
-void ExpectContent(const ExpectedContent& expected, const VtkFile& grid);
+void ExpectContent(const ExpectedContent& expected, const UnstructuredGrid& grid);
 
 // The values of an integer array (any section) called `name`; empty if there is none.
 std::vector<std::int64_t> IntegerValues(const std::vector<VtkAttribute>& attributes,
                                         const std::string& name);
 // 0-based indices of the points a "fixed" point array marks (any component nonzero).
-std::vector<std::int64_t> FixedPoints(const VtkFile& grid);
+std::vector<std::int64_t> FixedPoints(const UnstructuredGrid& grid);
 
 // The order MEDIT must hold `cells` in, computed here independently of the writer: vertex
 // cells dropped, the other kinds grouped in the order each first appears, grid order within.
-std::vector<std::int64_t> GroupedCellOrder(const VtkCells& cells);
-VtkCells Reordered(const VtkCells& cells, const std::vector<std::int64_t>& order);
+std::vector<std::int64_t> GroupedCellOrder(const GridCells& cells);
+GridCells Reordered(const GridCells& cells, const std::vector<std::int64_t>& order);
 
 void WriteText(const std::string& path, const std::string& text);
 

@@ -13,8 +13,8 @@
 namespace getme::formats {
 namespace {
 
-VtkDataArray Array(std::string name, VtkDataType type, int components, std::vector<double> values) {
-  VtkDataArray array;
+DataArray Array(std::string name, VtkDataType type, int components, std::vector<double> values) {
+  DataArray array;
   array.name = std::move(name);
   array.type = type;
   array.components = components;
@@ -26,7 +26,7 @@ VtkDataArray Array(std::string name, VtkDataType type, int components, std::vect
   return array;
 }
 
-void AddScalars(std::vector<VtkAttribute>& section, VtkDataArray array) {
+void AddScalars(std::vector<VtkAttribute>& section, DataArray array) {
   VtkAttribute attribute{VtkAttributeKind::kScalars, array.name, "default", {}};
   attribute.arrays.push_back(std::move(array));
   section.push_back(std::move(attribute));
@@ -35,7 +35,7 @@ void AddScalars(std::vector<VtkAttribute>& section, VtkDataArray array) {
 // Points 1..9 (0-based 0..8) and cells tetra, pyramid, tetra, hexahedron: interleaved kinds.
 MeshDocument Interleaved() {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.type = VtkDataType::kDouble;
   grid.points.components = 3;
   for (int i = 0; i < 9; ++i) {
@@ -57,7 +57,7 @@ std::string Between(const std::string& text, const std::string& from, const std:
 
 TEST(MeditWriter, BinaryIsRefused) {
   WriteOptions options;
-  options.encoding = VtkEncoding::kBinary;
+  options.encoding = Encoding::kBinary;
   const absl::StatusOr<std::string> text = SerializeMedit(Interleaved(), options);
   ASSERT_FALSE(text.ok());
   EXPECT_EQ(text.status().code(), absl::StatusCode::kInvalidArgument);
@@ -76,7 +76,7 @@ TEST(MeditWriter, InterleavedKindsAreGroupedInFirstAppearanceOrder) {
 
 TEST(MeditWriter, WedgeIsWrittenInPrismOrder) {
   MeshDocument document = Interleaved();
-  document.grid.cells = VtkCells();
+  document.grid.cells = GridCells();
   document.grid.cells.Add(13, {0, 1, 2, 3, 4, 5});
   const absl::StatusOr<std::string> text = SerializeMedit(document, WriteOptions{});
   ASSERT_TRUE(text.ok()) << text.status();
@@ -182,7 +182,7 @@ TEST(MeditSolution, EmptyWithoutCellArrays) {
 
 TEST(MeditSolution, FollowsTheMeshSectionsWithGmfTypes) {
   MeshDocument document = Interleaved();
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.cells.Add(1, {8});  // a vertex cell: in no section of either file
   AddScalars(grid.cell_data, Array("gmsh:physical", VtkDataType::kInt, 1, {5, 6, 7, 8, 9}));
   AddScalars(grid.cell_data, Array("id", VtkDataType::kDouble, 1, {0, 1, 2, 3, 4}));

@@ -17,9 +17,9 @@ import numpy as np
 
 S3 = math.sqrt(3.0)
 
-# Regular elements with unit edges in Gmsh's node order (= the paper's, NOTES.md §1): tet with
-# det[p1-p0, p2-p0, p3-p0] > 0, hex and prism bottom counter-clockwise seen from the top, pyramid
-# base counter-clockwise seen from the apex.
+# Regular elements with unit edges in Gmsh's node order (= the paper's, docs/node-orders.md): tet
+# with det[p1-p0, p2-p0, p3-p0] > 0, hex and prism bottom counter-clockwise seen from the top,
+# pyramid base counter-clockwise seen from the apex.
 REGULAR = {
     "tetra": [(0, 0, 0), (1, 0, 0), (0.5, S3 / 2, 0), (0.5, S3 / 6, math.sqrt(2.0 / 3.0))],
     "hexahedron": [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),

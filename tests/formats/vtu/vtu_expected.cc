@@ -24,9 +24,9 @@ const std::map<std::string, VtkDataType>& ExpectedTypes() {
 
 // The section holding array `name` in `attributes`, or null.
 const VtkAttribute* SectionOf(const std::vector<VtkAttribute>& attributes, const std::string& name,
-                              const VtkDataArray** array) {
+                              const DataArray** array) {
   for (const VtkAttribute& attribute : attributes) {
-    for (const VtkDataArray& candidate : attribute.arrays) {
+    for (const DataArray& candidate : attribute.arrays) {
       if (candidate.name == name) {
         *array = &candidate;
         return &attribute;
@@ -76,7 +76,7 @@ ExpectedContent ReadExpected(const std::string& vtu_path) {
   return content;
 }
 
-void ExpectContent(const ExpectedContent& expected, const VtkFile& grid) {
+void ExpectContent(const ExpectedContent& expected, const UnstructuredGrid& grid) {
   ASSERT_EQ(grid.points.reals.size(), expected.points.size());
   for (std::size_t i = 0; i < expected.points.size(); ++i) {
     ASSERT_EQ(std::bit_cast<std::uint64_t>(grid.points.reals[i]),
@@ -100,7 +100,7 @@ void ExpectContent(const ExpectedContent& expected, const VtkFile& grid) {
     const std::vector<VtkAttribute>& attributes = want.where == "point"  ? grid.point_data
                                                   : want.where == "cell" ? grid.cell_data
                                                                          : grid.field_data;
-    const VtkDataArray* array = nullptr;
+    const DataArray* array = nullptr;
     const VtkAttribute* section = SectionOf(attributes, want.name, &array);
     ASSERT_NE(section, nullptr);
     EXPECT_EQ(AttributeKindKeyword(section->kind), want.keyword);
@@ -116,7 +116,7 @@ void ExpectContent(const ExpectedContent& expected, const VtkFile& grid) {
                   std::bit_cast<std::uint64_t>(std::strtod(text, nullptr)))
             << "value " << i << ": " << array->reals[i] << " vs " << text;
       } else if (want.xml_type == "UInt64") {
-        // Stored bit-cast (vtk_file.h).
+        // Stored bit-cast (unstructured_grid.h).
         EXPECT_EQ(array->integers[i], std::bit_cast<std::int64_t>(std::strtoull(text, nullptr, 10)))
             << "value " << i;
       } else {

@@ -32,7 +32,7 @@ ExpectedContent ReadExpected(const std::string& vtu_path);
 
 // Asserts (gtest) that `grid` holds exactly the expected points (bit for bit), cells and arrays
 // (type, components, values bit for bit, and legacy section keyword).
-void ExpectContent(const ExpectedContent& expected, const VtkFile& grid);
+void ExpectContent(const ExpectedContent& expected, const UnstructuredGrid& grid);
 
 // Where the fixtures are: GETME_VTU_FIXTURES/<name>.
 std::string FixturePath(const std::string& name);

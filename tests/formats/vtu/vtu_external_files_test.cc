@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "absl/strings/match.h"
-#include "formats/vtk_mesh.h"
+#include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "formats/vtk_writer.h"
 #include "formats/vtu/vtu_reader.h"
@@ -25,7 +25,7 @@ using testing::ReadText;
 
 struct ExternalFile {
   const char* name;
-  VtkEncoding encoding;
+  Encoding encoding;
   VtuLayout layout;
   bool compressed;
 };
@@ -41,7 +41,7 @@ TEST_P(VtuExternalFileTest, ReadsWhatItsWriterWrote) {
   EXPECT_EQ(document->format, FileFormat::kVtkXml);
   EXPECT_EQ(document->as_read.encoding, GetParam().encoding);
   EXPECT_EQ(document->grid.encoding, GetParam().encoding);
-  if (GetParam().encoding == VtkEncoding::kBinary) {
+  if (GetParam().encoding == Encoding::kBinary) {
     EXPECT_EQ(document->as_read.vtu_layout, GetParam().layout);
     EXPECT_EQ(document->as_read.vtu_compress, GetParam().compressed);
   }
@@ -49,16 +49,16 @@ TEST_P(VtuExternalFileTest, ReadsWhatItsWriterWrote) {
 
   // Written back as .vtu with the options it was read with, and as a BINARY legacy file, it
   // reads back the same. (Not as ASCII: a float written as its shortest decimal reads back as the
-  // double of that decimal, by the model's convention for ASCII input, vtk_file.h.)
+  // double of that decimal, by the model's convention for ASCII input, unstructured_grid.h.)
   const absl::StatusOr<std::string> vtu = SerializeVtu(*document, document->as_read);
   ASSERT_TRUE(vtu.ok()) << vtu.status();
   const absl::StatusOr<MeshDocument> vtu_again = ParseVtu(*vtu);
   ASSERT_TRUE(vtu_again.ok()) << vtu_again.status();
   ExpectSameContent(document->grid, vtu_again->grid);
   {
-    const absl::StatusOr<std::string> legacy = SerializeVtk(document->grid, VtkEncoding::kBinary);
+    const absl::StatusOr<std::string> legacy = SerializeVtk(document->grid, Encoding::kBinary);
     ASSERT_TRUE(legacy.ok()) << legacy.status();
-    const absl::StatusOr<VtkFile> legacy_again = ParseVtk(*legacy);
+    const absl::StatusOr<UnstructuredGrid> legacy_again = ParseVtk(*legacy);
     ASSERT_TRUE(legacy_again.ok()) << legacy_again.status();
     ExpectSameContent(document->grid, *legacy_again);
   }
@@ -69,8 +69,8 @@ std::string StemOf(const ::testing::TestParamInfo<ExternalFile>& info) {
   return name.substr(0, name.find('.'));
 }
 
-constexpr VtkEncoding kAscii = VtkEncoding::kAscii;
-constexpr VtkEncoding kBinary = VtkEncoding::kBinary;
+constexpr Encoding kAscii = Encoding::kAscii;
+constexpr Encoding kBinary = Encoding::kBinary;
 constexpr VtuLayout kInline = VtuLayout::kInline;
 constexpr VtuLayout kAppended = VtuLayout::kAppended;
 
@@ -110,7 +110,7 @@ TEST(VtuExternalFiles, MeshioLzmaIsRefusedByName) {
 }
 
 // One regular element per type, handed to meshio in meshio's own (Gmsh's) node order: meshio
-// writes VTK's order itself, so through ParseVtu and ToMesh each must come out valid with mean
+// writes VTK's order itself, so through ParseVtu and GridToMesh each must come out valid with mean
 // ratio 1. This pins the node-order mapping: none for tetra, hexahedron and pyramid, VTK's
 // mirrored wedge for the prism.
 class VtuRegularElementTest : public ::testing::TestWithParam<std::string> {};
@@ -121,7 +121,7 @@ TEST_P(VtuRegularElementTest, ReadsBackValidWithMeanRatioOne) {
     const std::string path = FixturePath("regular_" + GetParam() + "_" + encoding + ".vtu");
     const absl::StatusOr<MeshDocument> document = ParseVtu(ReadText(path));
     ASSERT_TRUE(document.ok()) << document.status();
-    absl::StatusOr<VtkMesh> mesh = ToMesh(document->grid);
+    absl::StatusOr<GridMesh> mesh = GridToMesh(document->grid);
     ASSERT_TRUE(mesh.ok()) << mesh.status();
     ASSERT_EQ(mesh->mesh.element_count(), 1);
     DispatchElementType(mesh->mesh.type(0), [&]<ElementType kType>() {
@@ -131,7 +131,7 @@ TEST_P(VtuRegularElementTest, ReadsBackValidWithMeanRatioOne) {
     });
     if (GetParam() == "wedge") {
       // meshio permuted its (Gmsh) prism to VTK's wedge on writing.
-      const VtkCells& cells = document->grid.cells;
+      const GridCells& cells = document->grid.cells;
       EXPECT_EQ(std::vector<std::int64_t>(cells.nodes(0), cells.nodes(0) + 6),
                 (std::vector<std::int64_t>{0, 2, 1, 3, 5, 4}));
     }

@@ -70,7 +70,7 @@ std::string Binary(VtuLayout layout, bool zlib) {
   const absl::StatusOr<MeshDocument> document = ParseVtu(kTets);
   EXPECT_TRUE(document.ok()) << document.status();
   const absl::StatusOr<std::string> bytes =
-      SerializeVtu(*document, {VtkEncoding::kBinary, GmshVersion::k41, layout, zlib});
+      SerializeVtu(*document, {Encoding::kBinary, GmshVersion::k41, layout, zlib});
   EXPECT_TRUE(bytes.ok()) << bytes.status();
   return bytes.ok() ? *bytes : "";
 }
@@ -80,7 +80,7 @@ TEST(VtuMalformed, TheBaseFileIsFine) {
   ASSERT_TRUE(document.ok()) << document.status();
   EXPECT_EQ(document->grid.point_count(), 5);
   EXPECT_EQ(document->grid.cells.size(), 2);
-  EXPECT_EQ(document->as_read.encoding, VtkEncoding::kAscii);
+  EXPECT_EQ(document->as_read.encoding, Encoding::kAscii);
   EXPECT_EQ(document->as_read.vtu_layout, VtuLayout::kInline);
 }
 

@@ -29,11 +29,11 @@ struct Mode {
 void PrintTo(const Mode& mode, std::ostream* out) { *out << mode.name; }
 
 const Mode kModes[] = {
-    {"ascii", {VtkEncoding::kAscii, GmshVersion::k41, VtuLayout::kInline, false}},
-    {"inline", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kInline, false}},
-    {"inline_zlib", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kInline, true}},
-    {"appended", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, false}},
-    {"appended_zlib", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, true}},
+    {"ascii", {Encoding::kAscii, GmshVersion::k41, VtuLayout::kInline, false}},
+    {"inline", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kInline, false}},
+    {"inline_zlib", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kInline, true}},
+    {"appended", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, false}},
+    {"appended_zlib", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, true}},
 };
 
 std::string MeshPath(const std::string& name) {
@@ -51,13 +51,13 @@ std::vector<std::string> AllMeshNames() {
 // as unsigned_char (VTK XML's Bit type is unknown to most readers). Nothing else changes for
 // these files: their types (int, float, double) have XML twins, and their attribute sections
 // are SCALARS, the first of each block the active one.
-VtkFile ThroughVtu(VtkFile file) {
+UnstructuredGrid ThroughVtu(UnstructuredGrid file) {
   file.title.clear();
-  file.version_major = VtkFile{}.version_major;
-  file.version_minor = VtkFile{}.version_minor;
+  file.version_major = UnstructuredGrid{}.version_major;
+  file.version_minor = UnstructuredGrid{}.version_minor;
   for (auto* section : {&file.point_data, &file.cell_data, &file.field_data}) {
     for (VtkAttribute& attribute : *section) {
-      for (VtkDataArray& array : attribute.arrays) {
+      for (DataArray& array : attribute.arrays) {
         if (array.type == VtkDataType::kBit) array.type = VtkDataType::kUnsignedChar;
       }
     }
@@ -69,7 +69,7 @@ class VtuRoundTripTest : public ::testing::TestWithParam<std::tuple<std::string,
 
 TEST_P(VtuRoundTripTest, KeepsTheContent) {
   const auto& [name, mode] = GetParam();
-  const absl::StatusOr<VtkFile> legacy = ReadVtkFile(MeshPath(name));
+  const absl::StatusOr<UnstructuredGrid> legacy = ReadVtkFile(MeshPath(name));
   ASSERT_TRUE(legacy.ok()) << legacy.status();
   MeshDocument document;
   document.grid = *legacy;
@@ -87,7 +87,7 @@ TEST_P(VtuRoundTripTest, KeepsTheContent) {
   ASSERT_TRUE(back.ok()) << back.status();
   EXPECT_EQ(back->format, FileFormat::kVtkXml);
   EXPECT_EQ(back->as_read.encoding, mode.options.encoding);
-  if (mode.options.encoding == VtkEncoding::kBinary) {
+  if (mode.options.encoding == Encoding::kBinary) {
     EXPECT_EQ(back->as_read.vtu_layout, mode.options.vtu_layout);
     EXPECT_EQ(back->as_read.vtu_compress, mode.options.vtu_compress);
   }
@@ -96,9 +96,9 @@ TEST_P(VtuRoundTripTest, KeepsTheContent) {
   ASSERT_TRUE(again.ok()) << again.status();
   EXPECT_EQ(*again, *bytes);
   // And what came through .vtu still writes as a legacy file that reads back the same.
-  const absl::StatusOr<std::string> as_legacy = SerializeVtk(back->grid, VtkEncoding::kAscii);
+  const absl::StatusOr<std::string> as_legacy = SerializeVtk(back->grid, Encoding::kAscii);
   ASSERT_TRUE(as_legacy.ok()) << as_legacy.status();
-  const absl::StatusOr<VtkFile> legacy_again = ParseVtk(*as_legacy);
+  const absl::StatusOr<UnstructuredGrid> legacy_again = ParseVtk(*as_legacy);
   ASSERT_TRUE(legacy_again.ok()) << legacy_again.status();
   ExpectSameContent(back->grid, *legacy_again);
 }
@@ -117,7 +117,7 @@ INSTANTIATE_TEST_SUITE_P(AllMeshes, VtuRoundTripTest,
                          RoundTripName);
 
 TEST(VtuRoundTrip, ActiveScalarsAreNamedForParaView) {
-  const absl::StatusOr<VtkFile> legacy = ReadVtkFile(MeshPath("hybrid-example.vtk"));
+  const absl::StatusOr<UnstructuredGrid> legacy = ReadVtkFile(MeshPath("hybrid-example.vtk"));
   ASSERT_TRUE(legacy.ok()) << legacy.status();
   MeshDocument document;
   document.grid = *legacy;
@@ -130,7 +130,7 @@ TEST(VtuRoundTrip, ActiveScalarsAreNamedForParaView) {
 
 TEST(VtuRoundTrip, FloatStaysFloat32OnlyWhenExact) {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.type = VtkDataType::kFloat;
   grid.points.components = 3;
   grid.points.reals = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 0.25, 1};
@@ -157,7 +157,7 @@ TEST(VtuRoundTrip, FloatStaysFloat32OnlyWhenExact) {
 
 TEST(VtuRoundTrip, AsciiNumbersArePrintedLikeTheLegacyWriter) {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.components = 3;
   grid.points.reals = {0.1, 1.0 / 3.0, -2.5e-300, 1e22, 123456789.125, -0.0};
   grid.cells.Add(1, {0});
@@ -173,7 +173,7 @@ TEST(VtuRoundTrip, AsciiNumbersArePrintedLikeTheLegacyWriter) {
 
 TEST(VtuRoundTrip, AttributeRolesAndFieldDataSurvive) {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.components = 3;
   grid.points.reals = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   grid.cells.Add(10, {0, 1, 2, 3});
@@ -221,7 +221,7 @@ TEST(VtuRoundTrip, AttributeRolesAndFieldDataSurvive) {
 
 TEST(VtuRoundTrip, LookupTablesMoveToFieldData) {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.components = 3;
   grid.points.reals = {0, 0, 0};
   grid.cells.Add(1, {0});
@@ -233,7 +233,7 @@ TEST(VtuRoundTrip, LookupTablesMoveToFieldData) {
   const absl::StatusOr<MeshDocument> back = ParseVtu(*bytes);
   ASSERT_TRUE(back.ok()) << back.status();
   EXPECT_TRUE(back->grid.point_data.empty());
-  const VtkDataArray* colors = FindArray(back->grid.field_data, "colors");
+  const DataArray* colors = FindArray(back->grid.field_data, "colors");
   ASSERT_NE(colors, nullptr);
   EXPECT_EQ(colors->components, 4);
   EXPECT_EQ(colors->reals, table.arrays[0].reals);
@@ -241,7 +241,7 @@ TEST(VtuRoundTrip, LookupTablesMoveToFieldData) {
 
 TEST(VtuWriter, RefusesWhatItCannotWrite) {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.components = 3;
   grid.points.reals = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   grid.cells.Add(42, {4, 4, 0, 1, 2, 3});
@@ -278,7 +278,7 @@ TEST(VtuWriter, RefusesWhatItCannotWrite) {
 
 TEST(VtuWriter, EscapesNames) {
   MeshDocument document;
-  VtkFile& grid = document.grid;
+  UnstructuredGrid& grid = document.grid;
   grid.points.components = 3;
   grid.points.reals = {0, 0, 0};
   grid.cells.Add(1, {0});

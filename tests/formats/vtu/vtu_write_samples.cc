@@ -12,8 +12,8 @@
 
 namespace {
 
+using getme::formats::Encoding;
 using getme::formats::GmshVersion;
-using getme::formats::VtkEncoding;
 using getme::formats::VtuLayout;
 using getme::formats::WriteOptions;
 
@@ -23,11 +23,11 @@ struct Layout {
 };
 
 const Layout kLayouts[] = {
-    {"ascii", {VtkEncoding::kAscii, GmshVersion::k41, VtuLayout::kInline, false}},
-    {"inline", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kInline, false}},
-    {"inline_zlib", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kInline, true}},
-    {"appended", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, false}},
-    {"appended_zlib", {VtkEncoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, true}},
+    {"ascii", {Encoding::kAscii, GmshVersion::k41, VtuLayout::kInline, false}},
+    {"inline", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kInline, false}},
+    {"inline_zlib", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kInline, true}},
+    {"appended", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, false}},
+    {"appended_zlib", {Encoding::kBinary, GmshVersion::k41, VtuLayout::kAppended, true}},
 };
 
 }  // namespace
@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   const std::filesystem::path output = argv[1];
   std::filesystem::create_directories(output);
   for (int i = 2; i < argc; ++i) {
-    const absl::StatusOr<getme::formats::VtkFile> file = getme::formats::ReadVtkFile(argv[i]);
+    const absl::StatusOr<getme::formats::UnstructuredGrid> file =
+        getme::formats::ReadVtkFile(argv[i]);
     if (!file.ok()) {
       std::fprintf(stderr, "%s\n", std::string(file.status().message()).c_str());
       return 1;

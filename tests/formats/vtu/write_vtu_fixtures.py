@@ -172,7 +172,7 @@ for stem, options in variants.items():
     write_sidecar(path, read_points, cells, arrays)
 
 # ---- meshio: one regular element of each volume type, unit edges, in meshio's (Gmsh's) order,
-# oriented as the paper's Fig. 1 (NOTES.md §1) ----
+# oriented as the paper's Fig. 1 (docs/node-orders.md) ----
 
 s3 = math.sqrt(3.0)
 regular = {

@@ -7,14 +7,14 @@
 
 #include "absl/status/statusor.h"
 #include "getme/elements/element_type.h"
-#include "getme/mesh/mesh.h"
 #include "getme/elements/vec3.h"
+#include "getme/mesh/mesh.h"
 
 namespace getme::meshgen {
 
 // A mesh under construction whose nodes may still move: generators add nodes and elements (paper
-// node order, NOTES.md §1), distort coordinates while checking element validity, and finally turn
-// it into an immutable getme::Mesh through MeshBuilder.
+// node order, docs/node-orders.md), distort coordinates while checking element validity, and
+// finally turn it into an immutable getme::Mesh through MeshBuilder.
 class MeshDraft {
  public:
   // Sizes the storage up front: large generators would otherwise hold up to twice their arrays

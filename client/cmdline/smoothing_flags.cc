@@ -1,0 +1,21 @@
+#include "cmdline/smoothing_flags.h"
+
+namespace getme::cmdline {
+
+SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
+  SmoothingParams params;
+  params.method = flags.method;
+  params.threads = flags.threads;
+  params.fix_boundary = !flags.free_boundary;
+  params.untangle = !flags.no_untangle;
+  if (flags.literal) params.UseLiteralPaperAlgorithm();
+  if (flags.max_iterations) {
+    params.untangle_max_iterations = *flags.max_iterations;
+    params.simultaneous_max_iterations = *flags.max_iterations;
+    params.sequential_max_iterations = *flags.max_iterations;
+    params.laplace_max_iterations = *flags.max_iterations;
+  }
+  return params;
+}
+
+}  // namespace getme::cmdline

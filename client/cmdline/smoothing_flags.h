@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "getme/smoothing/smoothing_params.h"
+
+namespace getme::cmdline {
+
+// The flags that select the engine's parameters, as `getme smooth` spells them: --method,
+// --threads, --max-iterations, --free-boundary, --literal, --no-untangle. getme-bench takes a
+// subset with the same meaning.
+struct SmoothingFlags {
+  Method method = Method::kGetme;
+  int threads = 0;  // 0 = all cores
+  std::optional<std::int64_t> max_iterations;
+  bool free_boundary = false;
+  bool literal = false;      // the paper's literal algorithm, safeguards off
+  bool no_untangle = false;  // refuse invalid input instead of untangling it
+};
+
+// The engine parameters the flags select: method, threads, fix_boundary, untangle, the literal
+// algorithm, and the iteration cap applied to every phase.
+SmoothingParams ToSmoothingParams(const SmoothingFlags& flags);
+
+}  // namespace getme::cmdline

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <functional>
+
+#include "absl/status/status.h"
+#include "getme/mesh/mesh.h"
+#include "getme/smoothing/progress.h"
+#include "getme/smoothing/smoothing_params.h"
+#include "getme/v1/smoother.pb.h"
+#include "getme_wire/mesh_ids.h"
+
+namespace getme::server {
+
+// What a job works on and, once it succeeded, hands out once: the uploaded mesh (smoothed in
+// place), the caller's ids and fixed-node list (echoed with the result), the result options, and
+// the summary.
+struct JobResult {
+  v1::SmoothResult summary;
+  Mesh mesh;
+  wire::WireMeshIds ids;
+  v1::ResultOptions options;
+};
+
+// Runs the engine on a job's mesh on the calling thread: smooths `work.mesh` in place, calling
+// `publish` with each progress event, and on success fills `work.summary` (quality before and
+// after with the caller's histogram bins, phases, iterations, nodes; the job id is the job's to
+// set). Fails with the engine's status; an invalid result names the caller's element ids too.
+absl::Status RunSmoothing(JobResult& work, const SmoothingParams& params,
+                          const std::function<void(const ProgressEvent&)>& publish,
+                          const CancellationToken* cancel);
+
+}  // namespace getme::server

@@ -1,0 +1,111 @@
+// Engine <-> wire mappings of meshes, parameters, quality and progress, checked against
+// hand-written expectations (VTK wedge order, parameter defaults, wedges as prisms).
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "getme_wire/engine_mesh.h"
+#include "getme_wire/enums.h"
+#include "getme_wire/params.h"
+#include "getme_wire/progress.h"
+#include "getme_wire/reports.h"
+
+namespace getme::wire {
+namespace {
+
+std::vector<std::uint32_t> Values(const google::protobuf::RepeatedField<std::uint32_t>& field) {
+  return {field.begin(), field.end()};
+}
+
+TEST(ToWireMesh, EngineMeshPrismsGoBackToVtkWedgeOrder) {
+  MeshBuilder builder;
+  for (int i = 0; i < 6; ++i) builder.AddNode(i % 3 == 1 ? 1 : 0, i % 3 == 2 ? 1 : 0, i / 3);
+  // VTK wedge (0, 1, 2, 3, 4, 5) is paper prism (0, 2, 1, 3, 5, 4).
+  const std::array<std::int64_t, 6> paper = {0, 2, 1, 3, 5, 4};
+  builder.AddElement(ElementType::kPrism, paper);
+  builder.SetFixed(4);
+  absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const v1::Mesh wire = ToWireMesh(*mesh);
+  EXPECT_EQ(Values(wire.wedges()), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(Values(wire.fixed_nodes()), (std::vector<std::uint32_t>{4}));
+  EXPECT_EQ(wire.coordinates_size(), 18);
+}
+
+TEST(ToWireParameters, DefaultsLeaveEveryFieldUnset) {
+  const v1::SmoothingParameters wire = ToWireParameters(SmoothingParams());
+  EXPECT_EQ(wire.method(), v1::METHOD_GETME);
+  v1::SmoothingParameters expected;
+  expected.set_method(v1::METHOD_GETME);
+  EXPECT_EQ(wire.SerializeAsString(), expected.SerializeAsString());
+}
+
+TEST(ToWireParameters, ChangedFieldsAreSent) {
+  SmoothingParams params;
+  params.method = Method::kSmartLaplace;
+  params.UseLiteralPaperAlgorithm();
+  params.fix_boundary = false;
+  params.untangle = false;
+  params.sequential_max_iterations = 77;
+  params.simultaneous_sigma_max[TypeIndex(ElementType::kPrism)] = 1.7;
+  params.threads = 3;
+  const v1::SmoothingParameters wire = ToWireParameters(params);
+  EXPECT_EQ(wire.method(), v1::METHOD_SMART_LAPLACE);
+  ASSERT_TRUE(wire.has_simultaneous_backtracking_steps());
+  EXPECT_EQ(wire.simultaneous_backtracking_steps(), 0);
+  ASSERT_TRUE(wire.has_sequential_transform_blockers());
+  EXPECT_FALSE(wire.sequential_transform_blockers());
+  EXPECT_TRUE(wire.free_boundary());
+  ASSERT_TRUE(wire.has_untangle());
+  EXPECT_FALSE(wire.untangle());
+  EXPECT_EQ(wire.sequential_max_iterations(), 77);
+  EXPECT_FALSE(wire.has_simultaneous_max_iterations());
+  EXPECT_TRUE(wire.simultaneous_sigma_max().has_prism());
+  EXPECT_FALSE(wire.simultaneous_sigma_max().has_tetrahedron());
+  EXPECT_EQ(wire.simultaneous_sigma_max().prism(), 1.7);
+  EXPECT_FALSE(wire.has_simultaneous_sigma_min());
+  EXPECT_EQ(wire.threads(), 3);
+}
+
+TEST(FromWire, QualityMapsWedgesToPrismsAndProgressFields) {
+  v1::QualityReport report;
+  report.set_elements(5);
+  report.set_q_min(0.25);
+  report.set_invalid_elements(1);
+  report.add_first_invalid_elements(3);
+  report.mutable_wedges()->set_count(2);
+  report.mutable_wedges()->set_q_min(0.5);
+  report.mutable_pyramids()->set_count(1);
+  report.mutable_pyramids()->set_q_mean(0.75);
+  report.add_histogram(4);
+  report.add_histogram(1);
+  const MeshQuality quality = FromWireQuality(report);
+  EXPECT_EQ(quality.elements, 5);
+  EXPECT_EQ(quality.invalid, 1);
+  EXPECT_EQ(quality.first_invalid, (std::vector<ElementId>{3}));
+  EXPECT_EQ(quality.by_type[TypeIndex(ElementType::kPrism)].count, 2);
+  EXPECT_EQ(quality.by_type[TypeIndex(ElementType::kPrism)].q_min, 0.5);
+  EXPECT_EQ(quality.by_type[TypeIndex(ElementType::kPyramid)].q_mean, 0.75);
+  EXPECT_EQ(quality.by_type[TypeIndex(ElementType::kTetrahedron)].q_min, 1.0);  // no tets
+  EXPECT_EQ(quality.histogram, (std::vector<std::int64_t>{4, 1}));
+
+  v1::ProgressEvent wire_event;
+  wire_event.set_phase(v1::PHASE_SEQUENTIAL);
+  wire_event.set_iteration(3000);
+  wire_event.set_q_min(0.4);
+  wire_event.set_q_mean(0.8);
+  wire_event.set_reverted_nodes(2);
+  wire_event.set_phase_done(true);
+  const ProgressEvent event = FromWireProgress(wire_event);
+  EXPECT_EQ(event.phase, Phase::kSequential);
+  EXPECT_EQ(event.iteration, 3000);
+  EXPECT_EQ(event.q_min, 0.4);
+  EXPECT_EQ(event.q_mean, 0.8);
+  EXPECT_EQ(event.reverted_nodes, 2);
+  EXPECT_TRUE(event.phase_done);
+}
+
+}  // namespace
+}  // namespace getme::wire

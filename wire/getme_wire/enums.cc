@@ -1,0 +1,62 @@
+#include "getme_wire/enums.h"
+
+#include <array>
+#include <utility>
+
+namespace getme::wire {
+namespace {
+
+constexpr std::array<std::pair<Method, v1::Method>, 6> kMethods = {{
+    {Method::kGetme, v1::METHOD_GETME},
+    {Method::kSimultaneous, v1::METHOD_SIMULTANEOUS},
+    {Method::kSequential, v1::METHOD_SEQUENTIAL},
+    {Method::kWarpage, v1::METHOD_WARPAGE},
+    {Method::kSmartLaplace, v1::METHOD_SMART_LAPLACE},
+    {Method::kLaplace, v1::METHOD_LAPLACE},
+}};
+
+constexpr std::array<std::pair<Phase, v1::Phase>, 6> kPhases = {{
+    {Phase::kUntangle, v1::PHASE_UNTANGLE},
+    {Phase::kSimultaneous, v1::PHASE_SIMULTANEOUS},
+    {Phase::kSequential, v1::PHASE_SEQUENTIAL},
+    {Phase::kWarpage, v1::PHASE_WARPAGE},
+    {Phase::kSmartLaplace, v1::PHASE_SMART_LAPLACE},
+    {Phase::kLaplace, v1::PHASE_LAPLACE},
+}};
+
+template <typename Engine, typename Wire, std::size_t kSize>
+Wire ToWire(const std::array<std::pair<Engine, Wire>, kSize>& table, Engine value) {
+  for (const auto& [engine, wire] : table) {
+    if (engine == value) return wire;
+  }
+  return Wire{};
+}
+
+template <typename Engine, typename Wire, std::size_t kSize>
+std::optional<Engine> FromWire(const std::array<std::pair<Engine, Wire>, kSize>& table, int value) {
+  for (const auto& [engine, wire] : table) {
+    if (static_cast<int>(wire) == value) return engine;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+v1::Method ToWireMethod(Method method) { return ToWire(kMethods, method); }
+
+std::optional<Method> FromWireMethod(int method) {
+  if (method == v1::METHOD_UNSPECIFIED) return Method::kGetme;
+  return FromWire(kMethods, method);
+}
+
+v1::Phase ToWirePhase(Phase phase) { return ToWire(kPhases, phase); }
+
+std::optional<Phase> FromWirePhase(int phase) { return FromWire(kPhases, phase); }
+
+Method MethodOrGetme(v1::Method method) { return FromWireMethod(method).value_or(Method::kGetme); }
+
+Phase PhaseOrSimultaneous(v1::Phase phase) {
+  return FromWirePhase(phase).value_or(Phase::kSimultaneous);
+}
+
+}  // namespace getme::wire
