@@ -50,7 +50,7 @@ if [ -z "$sanitizer" ]; then
 else
   # Compiling is most of a sanitizer stage's time. With the sanitizers, -O1 compiles about 40 %
   # faster than -O2 (client/formats/vtk_reader.cc), and -g1 (line tables only: reports still name
-  # file and line) about 35 % faster than -g (core/getme/sequential_smoother.cc).
+  # file and line) about 35 % faster than -g (core/getme/smoothing/sequential_smoother.cc).
   # clang-14 compiles the instrumented code about 40 % faster than GCC 12 (smoother_service.cc,
   # regular_element_test.cc, gmsh_reader.cc), and it brings libFuzzer: the ASan build also holds
   # the fuzz targets (fuzz/, scripts/fuzz.sh), so CI compiles the readers once for both.

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The main job: installs the dependencies, builds, starts getme-server on loopback, and smooths the
-# bundled mixed example mesh (tests/data/hybrid-example.vtk) through it with the getme client,
-# showing live progress, then prints the mesh quality before and after and draws them
-# (histograms before/after, q_min and q_mean against time). The result is written to
-# out/example-smoothed.vtk, the picture to out/example-report.svg, the server's log to
-# out/getme-server.log.
+# The main job: installs the dependencies, builds only the two programs it runs (getme and
+# getme-server, not the tests: scripts/test.sh builds those later in the same build/), starts
+# getme-server on loopback, and smooths the bundled mixed example mesh
+# (tests/data/hybrid-example.vtk) through it with the getme client, showing live progress, then
+# prints the mesh quality before and after and draws them (histograms before/after, q_min and
+# q_mean against time). The result is written to out/example-smoothed.vtk, the picture to
+# out/example-report.svg, the server's log to out/getme-server.log.
 # Extra arguments go to `getme smooth`, e.g. scripts/demo.sh --method sequential --threads 1
 set -euo pipefail
 # shellcheck source=scripts/common.sh
@@ -44,7 +45,9 @@ stop_engine() {
 }
 run_getme() { "$getme" "$@" --server "$server_address"; }
 
-bash "$GETME_ROOT/scripts/build.sh"
+# Only what the demo runs: the CLI (quality, smooth, report) and the server, with the libraries
+# they link; about a third of the full build's steps. scripts/test.sh builds the rest in build/.
+bash "$GETME_ROOT/scripts/build.sh" --target getme --target getme-server
 [ -x "$getme" ] || die "the build produced no $getme"
 [ -x "$server_binary" ] || die "the build produced no $server_binary"
 [ -f "$input" ] || die "example mesh $input is missing"

@@ -1,5 +1,7 @@
 // getme dashboard: the job list from GET /v1/jobs (polled), one job's progress from its
 // Server-Sent Events (GET /v1/jobs/{id}/events), cancel via POST /v1/jobs/{id}:cancel.
+// Without a job in the URL (#job=ID) the page shows the newest job at once and follows newer ones
+// as they appear, until the user picks a job (a click, the demo form, or the URL).
 // JSON follows protobuf's canonical mapping: lowerCamelCase names, 64-bit integers as strings.
 // A server with --auth_tokens_file answers 401 without a bearer token: the page then asks for one
 // and keeps it in sessionStorage (this tab only, gone when it closes).
@@ -21,6 +23,9 @@ const methodName = (method) => (method || '').replace('METHOD_', '').toLowerCase
 let jobs = [];
 // The selected job: its id, event stream, and chart points {phase, iteration, qMin, qMean}.
 let selected = null;
+// Whether the user chose the selected job (click, demo form, URL); if not, the page follows the
+// newest job.
+let pickedByHand = false;
 let drawQueued = false;
 
 // ---- Access token ---------------------------------------------------------------------------
@@ -55,7 +60,7 @@ $('token-form').addEventListener('submit', (event) => {
     const id = selected.id;
     if (selected.events) selected.events.close();
     selected = null;
-    select(id);
+    select(id, { byHand: pickedByHand });
   }
 });
 
@@ -74,11 +79,27 @@ async function pollJobs() {
     if (!response.ok) throw new Error(`HTTP ${response.status}`);
     jobs = (await response.json()).jobs || [];
     $('connection').textContent = `${jobs.length} job(s) · updated ${new Date().toLocaleTimeString()}`;
+    if (!pickedByHand) followNewest();
     renderJobs();
   } catch (error) {
     $('connection').textContent = `server unreachable (${error.message}); retrying`;
   }
   setTimeout(pollJobs, POLL_MS);
+}
+
+// The newest of `list` (newest first, as GET /v1/jobs sends it): the running one if any runs,
+// else the most recently created.
+const newestOf = (list) => list.find((job) => stateName(job.state) === 'RUNNING') || list[0];
+
+// While the user has not picked a job: with none shown yet, show the newest; later, when jobs
+// appear that the previous poll did not list, show the newest of those. A job that has just
+// finished thus keeps its chart and histogram until a new job comes.
+let listedIds = null;
+function followNewest() {
+  const fresh = listedIds ? jobs.filter((job) => !listedIds.has(job.jobId)) : [];
+  listedIds = new Set(jobs.map((job) => job.jobId));
+  const next = newestOf(selected ? fresh : jobs);
+  if (next && (!selected || next.jobId !== selected.id)) select(next.jobId, { byHand: false });
 }
 
 // The engine does not know in advance how many iterations a phase takes (it stops on a
@@ -107,7 +128,7 @@ function renderJobs() {
       <td>${methodName(job.method)}</td><td>${Number(job.elements).toLocaleString()}</td>
       <td class="progress">${progressOf(job)}</td>
       <td>${latest.qMin !== undefined && state !== 'QUEUED' ? latest.qMin.toFixed(4) : ''}</td>`;
-    row.addEventListener('click', () => select(job.jobId));
+    row.addEventListener('click', () => select(job.jobId, { byHand: true }));
     return row;
   }));
   $('no-jobs').hidden = jobs.length > 0;
@@ -123,11 +144,15 @@ function renderJobs() {
 
 // ---- Selected job ----------------------------------------------------------------------------
 
-function select(id) {
+// Shows job `id`. A job picked by hand goes into the URL (#job=ID), so a reload comes back to it;
+// a job the page follows by itself does not, so a reload follows the newest again.
+function select(id, { byHand = true } = {}) {
+  pickedByHand = byHand;
+  if (byHand) history.replaceState(null, '', `#job=${id}`);
+  else if (location.hash) history.replaceState(null, '', location.pathname + location.search);
   if (selected && selected.id === id) return;
   if (selected && selected.events) selected.events.close();
   selected = { id, points: [], ended: false, events: null };
-  history.replaceState(null, '', `#job=${id}`);
   $('job-panel').hidden = false;
   $('job-id').textContent = id;
   $('job-summary').textContent = '';
@@ -394,11 +419,11 @@ async function submitDemo(event) {
   }
   $('demo-status').textContent = `job ${reply.jobId} queued`;
   jobs.unshift(reply);
-  select(reply.jobId);
+  select(reply.jobId, { byHand: true });
 }
 
 $('cancel').addEventListener('click', cancelSelected);
 $('demo-form').addEventListener('submit', submitDemo);
 const fromHash = /job=([0-9a-f]+)/.exec(location.hash);
-if (fromHash) select(fromHash[1]);
+if (fromHash) select(fromHash[1], { byHand: true });
 pollJobs();

@@ -164,6 +164,55 @@ try {
   check('with a token the page runs a job and streams its events', true, authJob);
   const unauthorized = await fetch(`${await started.url}v1/jobs`);
   check('without a token the API answers 401', unauthorized.status === 401, String(unauthorized.status));
+
+  // 5. The bare page (no job in the URL) opens on the newest job's live chart with no click: the
+  // running job, although a newer one has already finished; then it follows a job submitted
+  // later, until the user picks one by hand.
+  const running = await submitDemoJob(page, {
+    cells: 8, method: 'METHOD_SEQUENTIAL', simultaneous: 1, sequential: 1000000000,
+  });
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'RUNNING');
+  const finished = await submitDemoJob(page, {
+    cells: 4, method: 'METHOD_SIMULTANEOUS', simultaneous: 50, sequential: 1,
+  });
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'SUCCEEDED');
+  const bare = await context.newPage();
+  bare.setDefaultTimeout(60000);
+  bare.on('pageerror', (error) => check('no script errors on the bare page', false, error.message));
+  await bare.goto(url);
+  const opened = await bare.waitForFunction((id) => {
+    const panel = document.getElementById('job-panel');
+    const points = Number(document.getElementById('chart').dataset.points);
+    return !panel.hidden && document.getElementById('job-id').textContent === id && points > 0
+      ? points : null;
+  }, running, { timeout: 10000 }).then((handle) => handle.jsonValue(), () => 0);
+  const bareState = await shownState(bare);
+  check('the bare page opens on the running job\'s chart with no click',
+    opened > 0 && bareState === 'RUNNING',
+    `job ${await bare.textContent('#job-id')} (running ${running}, newer finished ${finished}), ` +
+    `${opened} points, state ${bareState}`);
+  const grew = await bare.waitForFunction((n) => Number(document.getElementById('chart').dataset.points) > n,
+    opened, { timeout: 10000 }).then(() => true, () => false);
+  check('its chart follows the running job live', grew, `${opened} → ${await chartPoints(bare)} points`);
+  await bare.screenshot({ path: path.join(outputDir, 'dashboard-bare.png'), fullPage: true });
+  const newer = await submitDemoJob(page, {
+    cells: 4, method: 'METHOD_SIMULTANEOUS', simultaneous: 50, sequential: 1,
+  });
+  const followed = await bare.waitForFunction((id) => document.getElementById('job-id').textContent === id,
+    newer, { timeout: 10000 }).then(() => true, () => false);
+  check('the bare page follows a newer job', followed && (await bare.evaluate(() => location.hash)) === '',
+    `shows ${await bare.textContent('#job-id')}, expected ${newer}`);
+  await bare.click(`tr[data-job-id="${finished}"]`);
+  const ignored = await submitDemoJob(page, {
+    cells: 4, method: 'METHOD_SIMULTANEOUS', simultaneous: 50, sequential: 1,
+  });
+  await bare.waitForSelector(`tr[data-job-id="${ignored}"]`);
+  await bare.waitForTimeout(1500);  // a poll or more after the new job was listed
+  const kept = await bare.textContent('#job-id');
+  const hash = await bare.evaluate(() => location.hash);
+  check('a job picked by hand stays selected when a newer one appears',
+    kept === finished && hash === `#job=${finished}`, `shows ${kept}, URL ${hash}`);
+  await fetch(`${url}v1/jobs/${running}:cancel`, { method: 'POST' });
 } catch (error) {
   check('browser run', false, error.stack || String(error));
 } finally {

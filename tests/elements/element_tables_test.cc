@@ -1,5 +1,5 @@
-// The library's compile-time tables (core/getme/element_tables.h) against the paper's tables typed
-// in independently (paper_tables.h): F, F̄, N, W⁻¹ and the edge lists.
+// The library's compile-time tables (core/getme/elements/element_tables.h) against the paper's
+// tables typed in independently (paper_tables.h): F, F̄, N, W⁻¹ and the edge lists.
 
 #include "getme/elements/element_tables.h"
 

@@ -1,8 +1,9 @@
 #pragma once
 
 // The paper's element tables (Section 2.1 and eq. 9, Def. 3), typed in a second time from the
-// paper's 1-based text so that the tests check the library's tables (core/getme/element_tables.h)
-// against an independent transcription instead of against themselves.
+// paper's 1-based text so that the tests check the library's tables
+// (core/getme/elements/element_tables.h) against an independent transcription instead of against
+// themselves.
 
 #include <Eigen/Core>
 #include <algorithm>

@@ -2,7 +2,7 @@
 
 // Straightforward re-computations of the paper's formulas from the tables in paper_tables.h, used
 // as the independent side of the element-level tests. They favour plain Eigen and loops over speed
-// and share no code with core/getme/element_quality.h or transform.h.
+// and share no code with core/getme/elements/element_quality.h or transform.h.
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -2,8 +2,8 @@
 
 // Straightforward Eigen re-computations of validity (Def. 2), mean ratio (Def. 3) and warpage
 // (Sec. 4.4) from the paper's tables (N before eq. (9), W of eq. (10)) typed in here. They share
-// no code with core/getme/element_quality.h: W is built from its columns and inverted by Eigen,
-// and the mean ratio uses std::pow instead of cbrt.
+// no code with core/getme/elements/element_quality.h: W is built from its columns and inverted by
+// Eigen, and the mean ratio uses std::pow instead of cbrt.
 
 #include <Eigen/Core>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 
 // Brute-force topology of a MeshSpec, computed from the paper's face tables (F, Sec. 2.1, before
-// eq. (1)) typed in here, independently of core/getme/mesh.cc and element_tables.h.
+// eq. (1)) typed in here, independently of core/getme/mesh/mesh.cc and element_tables.h.
 
 #include <cstdint>
 #include <vector>

@@ -7,7 +7,7 @@
                 blocks; cell data extended to them, point data "temperature".
   fixed.vtk     surface.vtk plus point data "fixed" (1 on every 9th interior node).
   inverted.vtk  surface.vtk with one cell of each volume type inverted.
-  regular.vtk   one regular element of each type (all edges 1), oriented per spec NOTES.md §1.
+  regular.vtk   one regular element of each type (all edges 1), oriented as in docs/node-orders.md.
   meshes.json   what the tests check against: the fixed and the interior nodes, the inverted
                 cells (cell indices over all blocks).
 """
@@ -21,7 +21,7 @@ import meshio
 import numpy as np
 
 # Faces of each meshio volume type in meshio's node order (VTK's; Gmsh's prism order for wedge,
-# which is the paper's): spec NOTES.md §2, tables F.
+# which is the paper's): the paper's tables F (Sec. 2.1), 0-based.
 FACES = {
     "tetra": [(0, 1, 2), (0, 1, 3), (1, 2, 3), (2, 0, 3)],
     "hexahedron": [(0, 1, 2, 3), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7),

@@ -1,5 +1,5 @@
-// ResultCheck (core/getme/result_check.h) on hand-broken results: each broken promise is caught
-// and named, and an intact result passes.
+// ResultCheck (core/getme/smoothing/result_check.h) on hand-broken results: each broken promise is
+// caught and named, and an intact result passes.
 #include "getme/smoothing/result_check.h"
 
 #include <gmock/gmock.h>

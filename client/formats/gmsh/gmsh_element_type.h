@@ -25,8 +25,8 @@ std::optional<GmshElementTypeInfo> GmshElementTypeOfVtk(int vtk_code);
 
 // The Gmsh node index of VTK node `vtk_node` of a cell of Gmsh type `gmsh_code`: the identity for
 // every type but the prism: Gmsh's prism (6) is the paper's order, VTK's wedge is mirrored against
-// it (NOTES.md §1): VTK (v0..v5) = Gmsh (g0, g2, g1, g3, g5, g4). That permutation is its own
-// inverse, so it maps both ways.
+// it (docs/node-orders.md): VTK (v0..v5) = Gmsh (g0, g2, g1, g3, g5, g4). That permutation is its
+// own inverse, so it maps both ways.
 int GmshNodeOfVtkNode(int gmsh_code, int vtk_node);
 
 }  // namespace getme::formats

@@ -1,7 +1,8 @@
-"""Chunked upload and download of meshes, as the C++ client does (client/remote/mesh_chunks.cc):
-MeshChunk messages of about 1 MB, far below gRPC's 4 MB message limit, field by field in
-declaration order, whole nodes and elements together; the receiver appends every chunk's fields
-to the earlier ones."""
+"""Chunked upload and download of meshes, as the C++ chunker cuts them
+(wire/getme_wire/mesh_chunker.cc): MeshChunk messages of about 1 MB, far below gRPC's 4 MB
+message limit, field by field in declaration order, whole nodes and elements together; the
+receiver appends every chunk's fields to the earlier ones. The field layout is
+_wire.CHUNK_FIELDS."""
 
 from __future__ import annotations
 
@@ -11,32 +12,32 @@ import numpy as np
 
 from getme._mesh import WireMesh
 from getme._stubs import smoother_pb2
-
-DEFAULT_CHUNK_BYTES = 1 << 20
+from getme._wire import CHUNK_FIELDS, DEFAULT_CHUNK_BYTES, ELEMENT_GROUPS, MIN_CHUNK_BYTES
 
 
 def mesh_size(wire: WireMesh):
     """SmoothHeader.expected_size: lets the server refuse a mesh over its limits before upload."""
-    return smoother_pb2.MeshSize(nodes=wire.nodes, tetrahedra=len(wire.tetrahedra) // 4,
-                                 hexahedra=len(wire.hexahedra) // 8, wedges=len(wire.wedges) // 6,
-                                 pyramids=len(wire.pyramids) // 5)
+    return smoother_pb2.MeshSize(
+        nodes=wire.nodes,
+        **{group.field: len(getattr(wire, group.field)) // group.nodes for group in ELEMENT_GROUPS})
 
 
 def _fields(wire: WireMesh):
-    """(Mesh field, values, values per item, upper bound of encoded bytes per value): doubles
-    are packed 8 bytes, uint32 varints at most 5, uint64 at most 10."""
-    fields = [("coordinates", wire.coordinates, 3, 8), ("tetrahedra", wire.tetrahedra, 4, 5),
-              ("hexahedra", wire.hexahedra, 8, 5), ("wedges", wire.wedges, 6, 5),
-              ("pyramids", wire.pyramids, 5, 5), ("fixed_nodes", wire.fixed_nodes, 1, 5)]
-    if wire.element_ids is not None:
-        fields.append(("element_ids", wire.element_ids, 1, 10))
+    """(Mesh field, values, values per item, upper bound of encoded bytes per value) for the
+    fields the mesh carries: a WireMesh has no node_ids (its node numbering is the points'
+    order), and element_ids only when they differ from the wire's numbering."""
+    fields = []
+    for layout in CHUNK_FIELDS:
+        values = getattr(wire, layout.field, None)
+        if values is not None:
+            fields.append((layout.field, values, layout.values_per_item, layout.bytes_per_value))
     return fields
 
 
 def mesh_chunks(wire: WireMesh, chunk_bytes: int = DEFAULT_CHUNK_BYTES) -> Iterator:
     """MeshChunk messages whose fields concatenate to the mesh. A mesh with no data at all still
     yields one (empty) chunk, so the server sees it and can name the empty mesh."""
-    budget_per_chunk = max(chunk_bytes, 64)
+    budget_per_chunk = max(chunk_bytes, MIN_CHUNK_BYTES)
     chunk = smoother_pb2.MeshChunk()
     budget = budget_per_chunk
     added = False

@@ -3,7 +3,8 @@
 Node orders: meshio's tetra, hexahedron and pyramid are VTK's, which is the wire's. meshio's
 "wedge" is in Gmsh prism order (meshio permutes VTK wedges when it reads and writes VTK files),
 while the wire wants VTK wedges, whose triangle (0, 1, 2) is mirrored (proto/getme/v1/mesh.proto,
-spec NOTES.md §1): both directions are the permutation (0, 2, 1, 3, 5, 4).
+docs/node-orders.md): both directions are the permutation _wire.PRISM_PERMUTATION. The element
+types, their wire fields and node orders are the table _wire.ELEMENT_GROUPS.
 
 Only what the wire cannot represent is checked here (shapes, negative or over-uint32 indices, a
 `fixed` array of the wrong length); the server checks the mesh itself and names what is wrong
@@ -18,18 +19,7 @@ from typing import Callable, Dict, List, Optional, Tuple
 
 import numpy as np
 
-# meshio type → (wire field, nodes per cell, permutation meshio → wire or None).
-VOLUME_CELLS = {
-    "tetra": ("tetrahedra", 4, None),
-    "hexahedron": ("hexahedra", 8, None),
-    "wedge": ("wedges", 6, (0, 2, 1, 3, 5, 4)),
-    "pyramid": ("pyramids", 5, None),
-}
-# Linear cells of dimension 0–2 (VTK vertex … quad, as meshio names them): not sent, returned
-# untouched; they follow their nodes, as in the CLI (client/formats/vtk_cell_type.h).
-PASSTHROUGH_CELLS = frozenset({"vertex", "line", "triangle", "quad", "polygon", "pixel"})
-
-_UINT32_MAX = 2**32 - 1
+from getme._wire import ELEMENT_GROUPS, GROUP_BY_MESHIO, NODE_INDEX_MAX, PASSTHROUGH_CELLS
 
 
 @dataclasses.dataclass
@@ -100,7 +90,7 @@ def _node_indices(what: str, data, nodes_per_cell: int) -> np.ndarray:
 def _check_index_range(what: str, array: np.ndarray) -> None:
     """ValueError naming the first index the wire's uint32 cannot carry."""
     flat = array.reshape(-1)
-    bad = np.flatnonzero((flat < 0) | (flat > _UINT32_MAX))
+    bad = np.flatnonzero((flat < 0) | (flat > NODE_INDEX_MAX))
     if bad.size:
         position = int(bad[0])
         if array.ndim == 2:
@@ -108,7 +98,7 @@ def _check_index_range(what: str, array: np.ndarray) -> None:
         else:
             where = f"entry {position}"
         raise ValueError(f"{what}: node index {flat[position]} at {where} is not in "
-                         f"[0, {_UINT32_MAX}]")
+                         f"[0, {NODE_INDEX_MAX}]")
 
 
 def _fixed_from_argument(fixed, nodes: int) -> np.ndarray:
@@ -128,7 +118,7 @@ def _fixed_from_argument(fixed, nodes: int) -> np.ndarray:
 
 
 def _fixed_from_point_data(point_data, nodes: int) -> np.ndarray:
-    """Nodes with a nonzero point-data value `fixed` (the CLI's convention, vtk_mesh.h)."""
+    """Nodes with a nonzero point-data value `fixed` (the CLI's convention, grid_mesh.h)."""
     if not point_data or "fixed" not in point_data:
         return np.zeros(0, dtype=np.int64)
     array = np.asarray(point_data["fixed"])
@@ -145,24 +135,24 @@ def to_wire(points, cells, point_data=None, fixed=None, with_fixed: bool = True)
     union of `fixed` (boolean mask or index list) and a nonzero point_data['fixed']."""
     coordinates = _points(points)
     nodes = len(coordinates)
-    per_field: Dict[str, List[np.ndarray]] = {field: [] for field, _, _ in VOLUME_CELLS.values()}
+    per_field: Dict[str, List[np.ndarray]] = {group.field: [] for group in ELEMENT_GROUPS}
     ids_per_field: Dict[str, List[np.ndarray]] = {field: [] for field in per_field}
     first_cell = 0
     for index, (cell_type, data) in enumerate(_blocks(cells)):
-        if cell_type in VOLUME_CELLS:
-            field, nodes_per_cell, permutation = VOLUME_CELLS[cell_type]
-            array = _node_indices(f"cell block {index} ({cell_type})", data, nodes_per_cell)
-            if permutation is not None:
-                array = array[:, permutation]
-            per_field[field].append(array.reshape(-1))
-            ids_per_field[field].append(np.arange(first_cell, first_cell + len(array)))
+        if cell_type in GROUP_BY_MESHIO:
+            group = GROUP_BY_MESHIO[cell_type]
+            array = _node_indices(f"cell block {index} ({cell_type})", data, group.nodes)
+            if group.permutation is not None:
+                array = array[:, group.permutation]
+            per_field[group.field].append(array.reshape(-1))
+            ids_per_field[group.field].append(np.arange(first_cell, first_cell + len(array)))
             first_cell += len(array)
         elif cell_type in PASSTHROUGH_CELLS or str(cell_type).startswith("polygon"):
             first_cell += len(data)
         else:
             raise ValueError(
                 f"cell block {index}: cell type {cell_type!r} cannot be smoothed or passed through "
-                f"(volume cells: {', '.join(VOLUME_CELLS)}; passed through: "
+                f"(volume cells: {', '.join(GROUP_BY_MESHIO)}; passed through: "
                 f"{', '.join(sorted(PASSTHROUGH_CELLS))})")
 
     def joined(parts: List[np.ndarray]) -> np.ndarray:
@@ -177,10 +167,9 @@ def to_wire(points, cells, point_data=None, fixed=None, with_fixed: bool = True)
         if fixed is not None:
             fixed_nodes = np.union1d(fixed_nodes, _fixed_from_argument(fixed, nodes))
         fixed_nodes = fixed_nodes.astype(np.int64)
-    return WireMesh(coordinates=coordinates.reshape(-1), tetrahedra=joined(per_field["tetrahedra"]),
-                    hexahedra=joined(per_field["hexahedra"]), wedges=joined(per_field["wedges"]),
-                    pyramids=joined(per_field["pyramids"]), fixed_nodes=fixed_nodes,
-                    element_ids=element_ids)
+    return WireMesh(coordinates=coordinates.reshape(-1), fixed_nodes=fixed_nodes,
+                    element_ids=element_ids,
+                    **{field: joined(parts) for field, parts in per_field.items()})
 
 
 def parse(mesh, fixed=None, with_fixed: bool = True) -> MeshInput:
@@ -214,4 +203,4 @@ def parse(mesh, fixed=None, with_fixed: bool = True) -> MeshInput:
                     f"points and cells, got {type(mesh).__name__}")
 
 
-__all__ = ["WireMesh", "MeshInput", "parse", "to_wire", "VOLUME_CELLS", "PASSTHROUGH_CELLS"]
+__all__ = ["WireMesh", "MeshInput", "parse", "to_wire"]

@@ -9,20 +9,11 @@ from typing import Any, Dict
 from google.protobuf.descriptor import FieldDescriptor
 
 from getme._stubs import params_pb2
+from getme._wire import ITERATION_COUNTERS, PER_TYPE_KEYS, is_method, method_names, method_value
 
-# The CLI's --max-iterations: one cap for every phase (client/cli/cli_options.cc).
+# The CLI's --max-iterations: one cap for every phase (client/cli/cli_options.cc), i.e. every
+# max_iterations_field of _wire.ITERATION_COUNTERS.
 MAX_ITERATIONS = "max_iterations"
-_MAX_ITERATIONS_FIELDS = ("untangle_max_iterations", "simultaneous_max_iterations",
-                          "sequential_max_iterations", "laplace_max_iterations")
-
-# PerType keys: the proto's names, and meshio's names for the same types (a meshio "wedge" is the
-# engine's prism).
-_PER_TYPE_KEYS = {
-    "tetrahedron": "tetrahedron", "tetra": "tetrahedron",
-    "hexahedron": "hexahedron",
-    "pyramid": "pyramid",
-    "prism": "prism", "wedge": "prism",
-}
 
 _FIELDS = {f.name: f for f in params_pb2.SmoothingParameters.DESCRIPTOR.fields}
 
@@ -41,18 +32,14 @@ def check_names(params: Dict[str, Any]) -> None:
 
 
 def _method(value) -> int:
-    enum = params_pb2.Method
     if isinstance(value, str):
-        name = value.strip().upper().replace("-", "_")
-        if not name.startswith("METHOD_"):
-            name = "METHOD_" + name
-        if name in enum.keys():
-            return enum.Value(name)
-        choices = ", ".join(k[len("METHOD_"):].lower() for k in enum.keys()
-                            if k != "METHOD_UNSPECIFIED")
+        method = method_value(value)
+        if method is not None:
+            return method
+        choices = ", ".join(method_names())
         raise ValueError(f"parameter method: unknown method {value!r} (one of {choices})")
     if isinstance(value, numbers.Integral) and not isinstance(value, bool):
-        if int(value) in enum.values():
+        if is_method(int(value)):
             return int(value)
         raise ValueError(f"parameter method: {value} is no getme.v1.Method value")
     raise TypeError(f"parameter method: expected a method name such as 'getme', got {value!r}")
@@ -64,13 +51,13 @@ def _set_per_type(name: str, value, message) -> None:
         return
     if not isinstance(value, dict):
         raise TypeError(f"parameter {name}: expected a dict of element type → value "
-                        f"(keys {', '.join(sorted(_PER_TYPE_KEYS))}), got {value!r}")
+                        f"(keys {', '.join(sorted(PER_TYPE_KEYS))}), got {value!r}")
     seen = {}
     for key, type_value in value.items():
-        wire_key = _PER_TYPE_KEYS.get(key)
+        wire_key = PER_TYPE_KEYS.get(key)
         if wire_key is None:
             raise ValueError(f"parameter {name}: unknown element type {key!r} "
-                             f"(one of {', '.join(sorted(_PER_TYPE_KEYS))})")
+                             f"(one of {', '.join(sorted(PER_TYPE_KEYS))})")
         if wire_key in seen:
             raise ValueError(f"parameter {name}: {key!r} and {seen[wire_key]!r} name the same type")
         seen[wire_key] = key
@@ -98,7 +85,7 @@ def to_proto(params: Dict[str, Any]):
     values = dict(params)
     cap = values.pop(MAX_ITERATIONS, None)
     if cap is not None:
-        for name in _MAX_ITERATIONS_FIELDS:
+        for name in (counter.max_iterations_field for counter in ITERATION_COUNTERS):
             if values.get(name) is None:
                 values[name] = cap
     for name, value in values.items():

@@ -2,7 +2,7 @@
 
 Element types are named as meshio names them ("tetra", "hexahedron", "wedge", "pyramid"), phases
 by the lower-case name of getme.v1.Phase without its prefix ("untangle", "simultaneous",
-"sequential", "warpage", "smart_laplace", "laplace").
+"sequential", "warpage", "smart_laplace", "laplace"); both mappings are _wire's.
 """
 
 from __future__ import annotations
@@ -10,20 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Dict, List
 
-from getme._stubs import smoother_pb2
-
-# QualityReport's per-type fields, by the meshio cell type they describe.
-_TYPE_FIELDS = (("tetra", "tetrahedra"), ("hexahedron", "hexahedra"), ("wedge", "wedges"),
-                ("pyramid", "pyramids"))
-
-
-def phase_name(phase: int) -> str:
-    """"simultaneous" for PHASE_SIMULTANEOUS; "unspecified" for 0; "phase_N" for unknown N."""
-    try:
-        name = smoother_pb2.Phase.Name(phase)
-    except ValueError:
-        return f"phase_{phase}"
-    return name[len("PHASE_"):].lower()
+from getme._wire import ELEMENT_GROUPS, ITERATION_COUNTERS, phase_name
 
 
 @dataclass(frozen=True)
@@ -60,10 +47,11 @@ class QualityReport:
     @staticmethod
     def from_proto(report) -> "QualityReport":
         by_type = {}
-        for name, wire_name in _TYPE_FIELDS:
-            wire = getattr(report, wire_name)
-            by_type[name] = TypeQuality(count=wire.count, q_min=wire.q_min, q_mean=wire.q_mean,
-                                        invalid_elements=wire.invalid_elements)
+        for group in ELEMENT_GROUPS:
+            wire = getattr(report, group.report_field)
+            by_type[group.meshio] = TypeQuality(count=wire.count, q_min=wire.q_min,
+                                                q_mean=wire.q_mean,
+                                                invalid_elements=wire.invalid_elements)
         return QualityReport(elements=report.elements, q_min=report.q_min, q_mean=report.q_mean,
                              invalid_elements=report.invalid_elements,
                              first_invalid_elements=list(report.first_invalid_elements),
@@ -124,12 +112,8 @@ class SmoothReport:
                          q_min=p.q_min, q_mean=p.q_mean, reverted_nodes=p.reverted_nodes)
             for p in result.phases
         ]
-        iterations = {
-            "untangle": result.iterations_untangle,
-            "simultaneous": result.iterations_simultaneous,
-            "sequential": result.iterations_sequential,
-            "laplace": result.iterations_laplace,
-        }
+        iterations = {counter.phase: getattr(result, counter.result_field)
+                      for counter in ITERATION_COUNTERS}
         return SmoothReport(job_id=result.job_id, before=QualityReport.from_proto(result.before),
                             after=QualityReport.from_proto(result.after), phases=phases,
                             iterations=iterations, seconds=result.seconds,
@@ -168,5 +152,4 @@ class ProgressEvent:
                              sequence=event.sequence, final=event.final)
 
 
-__all__ = ["TypeQuality", "QualityReport", "PhaseSummary", "SmoothReport", "ProgressEvent",
-           "phase_name"]
+__all__ = ["TypeQuality", "QualityReport", "PhaseSummary", "SmoothReport", "ProgressEvent"]
