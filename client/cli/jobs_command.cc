@@ -18,6 +18,7 @@
 #include "getme_wire/params.h"
 #include "getme_wire/progress.h"
 #include "getme_wire/reports.h"
+#include "getme_wire/status.h"
 #include "remote/grid_upload.h"
 #include "remote/smoother_client.h"
 
@@ -41,7 +42,7 @@ int List(remote::SmootherClient& client, const JobsCommandOptions& options) {
 int ReportJobOutcome(const v1::Job& job, bool json) {
   if (job.state() == v1::JOB_STATE_SUCCEEDED) return kExitSuccess;
   const absl::StatusCode code =
-      job.error_code() != 0 ? static_cast<absl::StatusCode>(job.error_code())
+      job.error_code() != 0 ? wire::FromWireJobError(job).code()
                             : (job.state() == v1::JOB_STATE_CANCELLED ? absl::StatusCode::kCancelled
                                                                       : absl::StatusCode::kUnknown);
   return ReportRemoteFailure(

@@ -7,6 +7,7 @@
 #include "getme_wire/params.h"
 #include "getme_wire/progress.h"
 #include "getme_wire/reports.h"
+#include "getme_wire/status.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
@@ -78,10 +79,9 @@ std::string JobJson(const v1::Job& job) {
       .AddDouble("q_min", latest.q_min())
       .AddDouble("q_mean", latest.q_mean())
       .AddBool("result_available", job.result_available())
-      .AddString("error_code",
-                 job.error_code() == 0
-                     ? ""
-                     : absl::StatusCodeToString(static_cast<absl::StatusCode>(job.error_code())))
+      .AddString("error_code", job.error_code() == 0
+                                   ? ""
+                                   : absl::StatusCodeToString(wire::FromWireJobError(job).code()))
       .AddString("error_message", job.error_message())
       .Build();
 }
@@ -99,7 +99,7 @@ std::string FormatJobLine(const v1::Job& job) {
   if (job.result_available()) line += "  result ready";
   if (!job.error_message().empty()) {
     absl::StrAppendFormat(&line, "  %s: %s",
-                          absl::StatusCodeToString(static_cast<absl::StatusCode>(job.error_code())),
+                          absl::StatusCodeToString(wire::FromWireJobError(job).code()),
                           job.error_message());
   }
   return line;

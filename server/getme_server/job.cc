@@ -7,6 +7,7 @@
 #include "getme/smoothing/smoother.h"
 #include "getme_wire/enums.h"
 #include "getme_wire/progress.h"
+#include "getme_wire/status.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::server {
@@ -204,10 +205,7 @@ v1::Job Job::Describe() const {
   job.set_started_unix_seconds(UnixSeconds(started_));
   job.set_finished_unix_seconds(UnixSeconds(finished_));
   if (trace_.latest().has_value()) *job.mutable_latest_progress() = *trace_.latest();
-  if (!outcome_.ok()) {
-    job.set_error_code(static_cast<int>(outcome_.code()));
-    job.set_error_message(std::string(outcome_.message()));
-  }
+  if (!outcome_.ok()) wire::ToWireJobError(outcome_, job);
   job.set_result_available(state_ == v1::JOB_STATE_SUCCEEDED && result_ != nullptr);
   return job;
 }

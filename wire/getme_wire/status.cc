@@ -12,4 +12,14 @@ absl::Status FromGrpcStatus(const grpc::Status& status) {
   return absl::Status(static_cast<absl::StatusCode>(status.error_code()), status.error_message());
 }
 
+void ToWireJobError(const absl::Status& outcome, v1::Job& job) {
+  job.set_error_code(static_cast<int>(outcome.code()));
+  job.set_error_message(std::string(outcome.message()));
+}
+
+absl::Status FromWireJobError(const v1::Job& job) {
+  if (job.error_code() == 0) return absl::OkStatus();
+  return absl::Status(static_cast<absl::StatusCode>(job.error_code()), job.error_message());
+}
+
 }  // namespace getme::wire
