@@ -46,7 +46,8 @@ stop_engine() {
 run_getme() { "$getme" "$@" --server "$server_address"; }
 
 # Only what the demo runs: the CLI (quality, smooth, report) and the server, with the libraries
-# they link; about a third of the full build's steps. scripts/test.sh builds the rest in build/.
+# they link: about 40 % of the full build's steps (docs/development.md, "First minutes").
+# scripts/test.sh builds the rest in the same build/.
 bash "$GETME_ROOT/scripts/build.sh" --target getme --target getme-server
 [ -x "$getme" ] || die "the build produced no $getme"
 [ -x "$server_binary" ] || die "the build produced no $server_binary"
