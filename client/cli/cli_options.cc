@@ -267,16 +267,17 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
         [&](const std::string& value) -> absl::Status {
           absl::StatusOr<Method> method = ParseMethod(value);
           if (!method.ok()) return method.status();
-          options.method = *method;
+          options.smoothing.method = *method;
           return absl::OkStatus();
         }}},
-      {"--threads", {true, IntegerFlag<int>("--threads", options.threads, 0, kMaxThreads)}},
+      {"--threads",
+       {true, IntegerFlag<int>("--threads", options.smoothing.threads, 0, kMaxThreads)}},
       {"--max-iterations",
        {true,
         IntegerFlag<std::int64_t>("--max-iterations", max_iterations, 1, std::int64_t{1} << 40)}},
-      {"--free-boundary", {false, SetTrue(options.free_boundary)}},
-      {"--literal", {false, SetTrue(options.literal)}},
-      {"--no-untangle", {false, SetTrue(options.no_untangle)}},
+      {"--free-boundary", {false, SetTrue(options.smoothing.free_boundary)}},
+      {"--literal", {false, SetTrue(options.smoothing.literal)}},
+      {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
       {"--fix-physical",
        {true,
         [&](const std::string& value) {
@@ -302,7 +303,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
   if (absl::Status status = ResolveFileFlags(binary, ascii, options.files); !status.ok()) {
     return status;
   }
-  if (max_iterations > 0) options.max_iterations = max_iterations;
+  if (max_iterations > 0) options.smoothing.max_iterations = max_iterations;
   if (auto s = CheckAccessFlags(options.access, !options.server.empty()); !s.ok()) return s;
   if (options.detach && options.server.empty()) {
     return absl::InvalidArgumentError("--detach needs --server HOST:PORT (a job to detach from)");
@@ -476,14 +477,7 @@ absl::StatusOr<ConvertCommandOptions> ParseConvertArguments(const std::vector<st
 }
 
 SmoothingParams ToSmoothingParams(const SmoothCommandOptions& options) {
-  cmdline::SmoothingFlags flags;
-  flags.method = options.method;
-  flags.threads = options.threads;
-  flags.max_iterations = options.max_iterations;
-  flags.free_boundary = options.free_boundary;
-  flags.literal = options.literal;
-  flags.no_untangle = options.no_untangle;
-  return cmdline::ToSmoothingParams(flags);
+  return cmdline::ToSmoothingParams(options.smoothing);
 }
 
 }  // namespace getme::cli

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "absl/status/statusor.h"
+#include "cmdline/smoothing_flags.h"
 #include "formats/mesh_file.h"
 #include "formats/unstructured_grid.h"
 #include "getme/smoothing/smoothing_params.h"
@@ -45,12 +46,7 @@ struct SmoothCommandOptions {
   bool help = false;
   std::string input;
   std::string output;
-  Method method = Method::kGetme;
-  int threads = 0;  // 0 = all cores
-  std::optional<std::int64_t> max_iterations;
-  bool free_boundary = false;
-  bool literal = false;      // the paper's literal algorithm, safeguards off
-  bool no_untangle = false;  // refuse invalid input instead of untangling it
+  cmdline::SmoothingFlags smoothing;  // --method, --threads, --max-iterations, ...
   FileOptions files;
   std::vector<std::string> fix_groups;  // --fix-physical: physical groups / refs whose nodes stay
   bool fix_surfaces = false;            // --fix-surfaces: nodes of every surface/line/vertex cell

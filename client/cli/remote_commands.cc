@@ -111,8 +111,9 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     }
     return ReportRemoteFailure(result.status(), options.json, kExitFailure);
   }
-  const events::SmoothReport report = MakeRemoteSmoothReport(
-      options.input, options.output, options.method, run->document.grid, *sent, result->result);
+  const events::SmoothReport report =
+      MakeRemoteSmoothReport(options.input, options.output, options.smoothing.method,
+                             run->document.grid, *sent, result->result);
   if (absl::Status status =
           WriteSmoothedFile(wire::CoordinatesOf(result->mesh), *run->output, run->document);
       !status.ok()) {

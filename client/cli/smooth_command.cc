@@ -38,7 +38,7 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   events::SmoothReport report;
   report.input = options.input;
   report.output = options.output;
-  report.method = options.method;
+  report.method = options.smoothing.method;
   report.nodes = mesh.node_count();
   for (const ElementType type : kAllElementTypes) {
     report.elements_by_type[TypeIndex(type)] = mesh.element_count(type);
