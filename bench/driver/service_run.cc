@@ -3,7 +3,6 @@
 #include <chrono>
 
 #include "getme_wire/engine_mesh.h"
-#include "getme_wire/enums.h"
 #include "getme_wire/params.h"
 #include "getme_wire/progress.h"
 #include "getme_wire/reports.h"

@@ -14,7 +14,6 @@
 #include "formats/mesh_file.h"
 #include "formats/vtk_cell_type.h"
 #include "getme_wire/engine_mesh.h"
-#include "getme_wire/enums.h"
 #include "getme_wire/params.h"
 #include "getme_wire/progress.h"
 #include "getme_wire/reports.h"

@@ -4,8 +4,6 @@
 #include "events/json_output.h"
 #include "formats/grid_mesh.h"
 #include "getme_wire/enums.h"
-#include "getme_wire/params.h"
-#include "getme_wire/progress.h"
 #include "getme_wire/reports.h"
 #include "getme_wire/status.h"
 #include "spdlog/spdlog.h"

@@ -10,7 +10,6 @@
 #include "formats/unstructured_grid.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
-#include "getme_wire/engine_mesh.h"
 #include "remote/grid_upload.h"
 
 namespace getme::cli {

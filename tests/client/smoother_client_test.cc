@@ -10,10 +10,8 @@
 
 #include "getme/smoothing/smoother.h"
 #include "getme_wire/engine_mesh.h"
-#include "getme_wire/enums.h"
 #include "getme_wire/params.h"
 #include "getme_wire/progress.h"
-#include "getme_wire/reports.h"
 #include "remote/grid_upload.h"
 #include "test_meshes.h"
 #include "test_server.h"
