@@ -1,0 +1,169 @@
+#pragma once
+
+// The local objective of a derivative-based polish after GETMe (issue 14) and its exact gradient
+// and Hessian with respect to one node, templated on the element type. Scalar double only: a
+// polish step works on one node and the few elements around it.
+//
+// Which cost. Def. 3 / eq. (10) averages the tetrahedral mean ratio q_k = 3 det(S_k)^{2/3} /
+// |S_k|_F² over the element's node tetrahedra T_k (eq. 9), S_k = D(T_k) W⁻¹. The cost here is the
+// mean of the reciprocals,
+//
+//   c(E) = (1/K) Σ_k 1/q_k = (1/K) Σ_k |S_k|_F² / (3 det(S_k)^{2/3}),
+//
+// not 1/q(E), for three reasons:
+//   - Barrier (Def. 2). One flattening node tetrahedron (det S_k → 0⁺) sends its 1/q_k to +∞, so
+//     c(E) → +∞ as well; q(E) would only lose one of its K terms and stay positive, so 1/q(E)
+//     stays finite and would let a minimiser flatten a corner of a hexahedron, prism or pyramid.
+//   - Convexity in one node. Moving node i by x changes S_k by x b_kᵗ (rank one), so |S_k|_F² is
+//     a convex quadratic and det S_k is affine in x; (u, t) ↦ |u|² / t^{2/3} is jointly convex for
+//     t > 0 (its Hessian has a non-negative Schur complement), hence each 1/q_k, and so c(E) and
+//     any sum of such costs over a node's elements, is convex on the region where every element
+//     is valid (an intersection of half-spaces, so convex itself): node-local Newton steps are
+//     well posed.
+//   - It is the objective of the global optimiser the polish is measured against: Mesquite's
+//     feasible Newton minimises the average over corner tetrahedra of this same per-tetrahedron
+//     inverse mean ratio.
+// c(E) ≥ 1 (every q_k ≤ 1, Def. 3), with equality when every S_k is a multiple of a rotation, as in
+// a regular element; by the arithmetic–harmonic mean inequality c(E) ≥ 1/q(E), with equality for
+// a tetrahedron (K = 1).
+// Like q it is invariant under translation, rotation and uniform scaling (Lemma 1).
+//
+// Derivatives. For node tetrahedron T_k = (t_0, t_1, t_2, t_3) the edge matrix is D = P E with
+// P = [p_{t_0} … p_{t_3}] and E's rows (−1, −1, −1), e_1ᵗ, e_2ᵗ, e_3ᵗ, so S = Σ_m p_{t_m} b_mᵗ
+// with b_mᵗ row m of E W⁻¹. With N = |S|_F², δ = det S and node t_m moved by x:
+//   ∇N = 2 S b_m,  ∇²N = 2 |b_m|² I,
+//   ∇δ = v = det(W⁻¹) ∂det D/∂p_{t_m} (a cross product of two edges),  ∇²δ = 0 (δ is affine),
+// and for 1/q = N δ^{-2/3} / 3:
+//   ∇(1/q)  = a (∇N − (2/3)(N/δ) v),
+//   ∇²(1/q) = a (2|b_m|² I − (2/(3δ)) (∇N vᵗ + v ∇Nᵗ) + (10/9)(N/δ²) v vᵗ),  a = 1/(3 δ^{2/3}).
+// A node belongs to several node tetrahedra (to all four of a pyramid's, as the apex): their terms
+// are summed, then divided by K like the cost.
+
+#include <Eigen/Core>
+#include <cmath>
+#include <limits>
+
+#include "getme/elements/element_tables.h"
+#include "getme/elements/vec3.h"
+
+namespace getme {
+
+// The cost c(E) and its gradient with respect to one node.
+struct InverseMeanRatioGradientResult {
+  double cost;
+  Vec3 gradient;
+};
+
+// The cost c(E), its gradient and its 3×3 Hessian block with respect to one node.
+struct InverseMeanRatioHessianResult {
+  double cost;
+  Vec3 gradient;
+  Eigen::Matrix3d hessian;
+};
+
+namespace internal {
+
+// kOrder 0: cost only; 1: and the gradient; 2: and the Hessian. For an invalid element (Def. 2:
+// some node tetrahedron has det ≤ 0, or a coordinate is NaN) the cost is +∞ — the barrier — and
+// the gradient and Hessian are left zero: they carry no information past the barrier, and a
+// caller must test std::isfinite(cost) before using them. A node index outside
+// 0..NodeCount(type)−1 belongs to no node tetrahedron and gets zero derivatives.
+template <ElementType kType, int kOrder>
+inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3* gradient,
+                                    Eigen::Matrix3d* hessian) {
+  using Table = ElementTable<kType>;
+  constexpr auto& w = Table::kTargetInverse;
+  // The columns of S below and det S = det D · w00 w11 w22 rely on W⁻¹ being upper triangular.
+  static_assert(w[1][0] == 0.0 && w[2][0] == 0.0 && w[2][1] == 0.0);
+  constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
+  constexpr int kTets = static_cast<int>(Table::kNodeTets.size());
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+  double sum = 0.0;
+  Vec3 g = Vec3::Zero();
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  for (const auto& t : Table::kNodeTets) {
+    const Vec3 d0 = p[t[1]] - p[t[0]];
+    const Vec3 d1 = p[t[2]] - p[t[0]];
+    const Vec3 d2 = p[t[3]] - p[t[0]];
+    const Vec3 d1xd2 = d1.cross(d2);
+    const double det_d = d0.dot(d1xd2);
+    if (!(det_d > 0.0)) {
+      if constexpr (kOrder >= 1) gradient->setZero();
+      if constexpr (kOrder >= 2) hessian->setZero();
+      return kInfinity;
+    }
+    // Columns of S = D W⁻¹, exactly as MeanRatioOrInvalid forms them (element_quality.h).
+    const Vec3 s0 = d0 * w[0][0];
+    const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
+    const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
+    const double det_s = det_d * kDetWInverse;
+    const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
+    const double a = 1.0 / (3.0 * std::cbrt(det_s * det_s));
+    sum += frobenius2 * a;
+    if constexpr (kOrder >= 1) {
+      int m = -1;
+      for (int j = 0; j < 4; ++j) {
+        if (t[j] == node) m = j;
+      }
+      if (m < 0) continue;
+      // b = row m of E W⁻¹, and ∂det D/∂p_{t_m}: det D = d0 · (d1 × d2) is linear in each edge,
+      // and p_{t_0} enters all three edges with sign −1.
+      Vec3 b;
+      Vec3 ddet;
+      if (m == 0) {
+        b = -Vec3(w[0][0] + w[1][0] + w[2][0], w[0][1] + w[1][1] + w[2][1],
+                  w[0][2] + w[1][2] + w[2][2]);
+        ddet = -(d1xd2 + d2.cross(d0) + d0.cross(d1));
+      } else {
+        b = Vec3(w[m - 1][0], w[m - 1][1], w[m - 1][2]);
+        ddet = m == 1 ? d1xd2 : (m == 2 ? d2.cross(d0) : d0.cross(d1));
+      }
+      const Vec3 grad_n = 2.0 * (s0 * b[0] + s1 * b[1] + s2 * b[2]);
+      const Vec3 v = kDetWInverse * ddet;
+      const double n_over_det = frobenius2 / det_s;
+      g += a * (grad_n - (2.0 / 3.0) * n_over_det * v);
+      if constexpr (kOrder >= 2) {
+        const Eigen::Matrix3d cross_terms = grad_n * v.transpose() + v * grad_n.transpose();
+        h += a * (2.0 * b.squaredNorm() * Eigen::Matrix3d::Identity() -
+                  (2.0 / (3.0 * det_s)) * cross_terms +
+                  (10.0 / 9.0) * (n_over_det / det_s) * (v * v.transpose()));
+      }
+    }
+  }
+  constexpr double kInverseTets = 1.0 / kTets;
+  if constexpr (kOrder >= 1) *gradient = g * kInverseTets;
+  if constexpr (kOrder >= 2) *hessian = h * kInverseTets;
+  return sum * kInverseTets;
+}
+
+}  // namespace internal
+
+// c(E): the mean over node tetrahedra of 1/q_k (see the top of this file), +∞ for an element that
+// is not valid (Def. 2).
+template <ElementType kType>
+inline double InverseMeanRatioCost(const ElementNodes<kType>& p) {
+  return internal::InverseMeanRatioTerms<kType, 0>(p, -1, nullptr, nullptr);
+}
+
+// c(E) and ∂c/∂p_node. Past the barrier (cost +∞) the gradient is zero.
+template <ElementType kType>
+inline InverseMeanRatioGradientResult InverseMeanRatioGradient(const ElementNodes<kType>& p,
+                                                               int node) {
+  InverseMeanRatioGradientResult result;
+  result.cost = internal::InverseMeanRatioTerms<kType, 1>(p, node, &result.gradient, nullptr);
+  return result;
+}
+
+// c(E), ∂c/∂p_node and ∂²c/∂p_node² (symmetric, positive semi-definite where c is finite). Past
+// the barrier (cost +∞) gradient and Hessian are zero.
+template <ElementType kType>
+inline InverseMeanRatioHessianResult InverseMeanRatioHessian(const ElementNodes<kType>& p,
+                                                             int node) {
+  InverseMeanRatioHessianResult result;
+  result.cost =
+      internal::InverseMeanRatioTerms<kType, 2>(p, node, &result.gradient, &result.hessian);
+  return result;
+}
+
+}  // namespace getme
