@@ -5,6 +5,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "getme/smoothing/laplace_smoother.h"
+#include "getme/smoothing/polish.h"
 #include "getme/smoothing/result_check.h"
 #include "getme/smoothing/sequential_smoother.h"
 #include "getme/smoothing/simultaneous_smoother.h"
@@ -82,6 +83,13 @@ absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
       }
       if (method == Method::kWarpage) {
         return record(RunSequential(context, SelectionCriterion::kQualityGamma));
+      }
+      // Issue 14, item 1: raise q_mean towards the global optimiser's after GETMe, without
+      // lowering q_min (polish.h). Off by default until the wire and the CLI carry the switch.
+      if (context.params.polish) {
+        absl::StatusOr<PolishSummary> polish = RunPolish(context);
+        if (!polish.ok()) return polish.status();
+        result.iterations_polish = polish->sweeps;
       }
       return absl::OkStatus();
     case Method::kLaplace:

@@ -97,7 +97,8 @@ absl::Status SmoothingParams::Validate() const {
         {"penalty_repeat", penalty_repeat},
         {"penalty_success", penalty_success},
         {"laplace_tolerance", laplace_tolerance},
-        {"sequential_improvement_tolerance", sequential_improvement_tolerance}}) {
+        {"sequential_improvement_tolerance", sequential_improvement_tolerance},
+        {"polish_tolerance", polish_tolerance}}) {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
@@ -106,7 +107,8 @@ absl::Status SmoothingParams::Validate() const {
                                     {"sequential_max_iterations", sequential_max_iterations},
                                     {"sequential_stall_iterations", sequential_stall_iterations},
                                     {"laplace_max_iterations", laplace_max_iterations},
-                                    {"untangle_max_iterations", untangle_max_iterations}}) {
+                                    {"untangle_max_iterations", untangle_max_iterations},
+                                    {"polish_max_sweeps", polish_max_sweeps}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {
@@ -118,6 +120,9 @@ absl::Status SmoothingParams::Validate() const {
   }
   if (sequential_backtracking_steps < 0 || sequential_backtracking_steps > 30) {
     return OutOfRange("sequential_backtracking_steps", sequential_backtracking_steps, "in [0, 30]");
+  }
+  if (polish_backtracking_steps < 0 || polish_backtracking_steps > 30) {
+    return OutOfRange("polish_backtracking_steps", polish_backtracking_steps, "in [0, 30]");
   }
   if (threads < 0 || threads > 1024) return OutOfRange("threads", threads, "in [0, 1024]");
   return absl::OkStatus();

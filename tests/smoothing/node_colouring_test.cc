@@ -1,0 +1,76 @@
+// ColourNodes (core/getme/mesh/node_colouring.h): the independent sets the polish stage moves in
+// parallel. No two nodes of one colour may share an element, every selected node is coloured once,
+// unselected nodes not at all, and the sets are ascending so the order of node steps is fixed.
+
+#include "getme/mesh/node_colouring.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "getme/meshgen/distorted_hex_block.h"
+#include "getme/meshgen/hybrid_block.h"
+
+namespace getme {
+namespace {
+
+void ExpectProperColouring(const Mesh& mesh, const std::vector<std::uint8_t>& selected) {
+  const NodeColouring colouring = ColourNodes(mesh, selected);
+  std::vector<int> colour(mesh.node_count(), -1);
+  for (int c = 0; c < colouring.colour_count(); ++c) {
+    const auto nodes = colouring.Colour(c);
+    EXPECT_FALSE(nodes.empty()) << "colour " << c;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (i > 0) {
+        EXPECT_LT(nodes[i - 1], nodes[i]) << "colour " << c << " not ascending";
+      }
+      EXPECT_EQ(colour[nodes[i]], -1) << "node " << nodes[i] << " coloured twice";
+      colour[nodes[i]] = c;
+    }
+  }
+  for (NodeId node = 0; node < mesh.node_count(); ++node) {
+    EXPECT_EQ(colour[node] >= 0, selected[node] != 0) << "node " << node;
+  }
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    const auto nodes = mesh.element_nodes(e);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      for (std::size_t j = i + 1; j < nodes.size(); ++j) {
+        if (colour[nodes[i]] < 0) continue;
+        EXPECT_NE(colour[nodes[i]], colour[nodes[j]])
+            << "nodes " << nodes[i] << " and " << nodes[j] << " of element " << e;
+      }
+    }
+  }
+}
+
+TEST(NodeColouringTest, NoTwoNodesOfOneColourShareAnElement) {
+  for (std::uint64_t seed : {1, 2, 3}) {
+    auto mesh = meshgen::HybridBlock(6, 5, 4, 0.3, seed);
+    ASSERT_TRUE(mesh.ok()) << mesh.status();
+    ExpectProperColouring(*mesh, std::vector<std::uint8_t>(mesh->node_count(), 1));
+  }
+}
+
+TEST(NodeColouringTest, OnlySelectedNodesAreColoured) {
+  auto mesh = meshgen::DistortedHexBlock(5, 5, 5, 0.3, 4);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  std::vector<std::uint8_t> selected(mesh->node_count(), 0);
+  for (NodeId node = 0; node < mesh->node_count(); ++node) {
+    selected[node] = !mesh->is_boundary(node) && node % 3 != 0 ? 1 : 0;
+  }
+  ExpectProperColouring(*mesh, selected);
+}
+
+TEST(NodeColouringTest, HexGridNeedsFewColours) {
+  // A node of a hexahedral grid shares elements with 26 others; first fit needs at most 27 colours
+  // (a structured grid admits 8).
+  auto mesh = meshgen::DistortedHexBlock(6, 6, 6, 0.0, 1);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const NodeColouring colouring =
+      ColourNodes(*mesh, std::vector<std::uint8_t>(mesh->node_count(), 1));
+  EXPECT_GE(colouring.colour_count(), 8);
+  EXPECT_LE(colouring.colour_count(), 27);
+}
+
+}  // namespace
+}  // namespace getme

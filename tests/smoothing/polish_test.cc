@@ -1,0 +1,184 @@
+// The polish stage (core/getme/smoothing/polish.h, issue 14 item 1), through Smooth(): on random
+// valid meshes it never lowers q_min below what GETMe handed it, never inverts an element, leaves
+// fixed nodes where they are, raises q_mean on distorted meshes, and gives bit-identical
+// coordinates for every thread count. With polish off (the default) the method is unchanged: the
+// other smoothing tests cover that.
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "getme/meshgen/distorted_hex_block.h"
+#include "getme/meshgen/hybrid_block.h"
+#include "getme/smoothing/smoother.h"
+#include "smoothing_test_support.h"
+
+namespace getme {
+namespace {
+
+struct NamedMesh {
+  std::string name;
+  std::function<absl::StatusOr<Mesh>()> make;
+};
+
+std::vector<NamedMesh> RandomMeshes() {
+  std::vector<NamedMesh> meshes;
+  for (std::uint64_t seed : {3, 17, 29}) {
+    meshes.push_back({"hybrid_" + std::to_string(seed),
+                      [seed] { return meshgen::HybridBlock(6, 6, 5, 0.35, seed); }});
+    meshes.push_back({"distorted_hex_" + std::to_string(seed),
+                      [seed] { return meshgen::DistortedHexBlock(6, 6, 6, 0.35, seed); }});
+  }
+  return meshes;
+}
+
+// GETMe cut short, so the polish works on a mesh that is still distorted, and a polish of many
+// sweeps: the property must hold wherever the stage starts.
+SmoothingParams ShortGetme(bool polish, bool fix_boundary) {
+  SmoothingParams params;
+  params.threads = 2;
+  params.simultaneous_max_iterations = 3;
+  params.sequential_max_iterations = 200;
+  params.fix_boundary = fix_boundary;
+  params.polish = polish;
+  params.polish_max_sweeps = 20;
+  return params;
+}
+
+void FixSomeInteriorNodes(Mesh& mesh) {
+  for (NodeId node = 0; node < mesh.node_count(); node += 7) mesh.set_fixed(node, true);
+}
+
+TEST(PolishTest, NeverLowersQMinNeverInvertsKeepsFixedNodesAndRaisesQMean) {
+  for (const NamedMesh& named : RandomMeshes()) {
+    for (bool fix_boundary : {true, false}) {
+      SCOPED_TRACE(named.name + (fix_boundary ? " fixed boundary" : " free boundary"));
+      auto without = named.make();
+      auto with = named.make();
+      ASSERT_TRUE(without.ok() && with.ok());
+      FixSomeInteriorNodes(*without);
+      FixSomeInteriorNodes(*with);
+      const testing::CoordinateSnapshot original(*with);
+      auto plain = Smooth(*without, ShortGetme(false, fix_boundary));
+      auto polished = Smooth(*with, ShortGetme(true, fix_boundary));
+      ASSERT_TRUE(plain.ok()) << plain.status();
+      ASSERT_TRUE(polished.ok()) << polished.status();
+      EXPECT_EQ(plain->iterations_polish, 0);
+      EXPECT_GE(polished->iterations_polish, 1);
+      // The same phases ran before the polish (deterministic), so `plain` is the state the polish
+      // started from.
+      EXPECT_GE(polished->after.q_min, plain->after.q_min);
+      EXPECT_GT(polished->after.q_mean, plain->after.q_mean + 1e-3);
+      EXPECT_EQ(polished->after.invalid, 0);
+      EXPECT_EQ(testing::CountInvalid(*with), 0);
+      const testing::CoordinateSnapshot after(*with);
+      SmoothingParams params = ShortGetme(true, fix_boundary);
+      for (NodeId node : testing::ImmovableNodes(*with, params)) {
+        EXPECT_EQ(after.x[node], original.x[node]) << "node " << node;
+        EXPECT_EQ(after.y[node], original.y[node]) << "node " << node;
+        EXPECT_EQ(after.z[node], original.z[node]) << "node " << node;
+      }
+    }
+  }
+}
+
+TEST(PolishTest, PolishAfterFullGetmeKeepsQMinAndRaisesQMean) {
+  auto without = meshgen::HybridBlock(8, 8, 6, 0.3, 13);
+  auto with = meshgen::HybridBlock(8, 8, 6, 0.3, 13);
+  ASSERT_TRUE(without.ok() && with.ok());
+  SmoothingParams params;
+  params.threads = 2;
+  auto plain = Smooth(*without, params);
+  params.polish = true;
+  auto polished = Smooth(*with, params);
+  ASSERT_TRUE(plain.ok()) << plain.status();
+  ASSERT_TRUE(polished.ok()) << polished.status();
+  EXPECT_GE(polished->after.q_min, plain->after.q_min);
+  EXPECT_GT(polished->after.q_mean, plain->after.q_mean);
+  EXPECT_EQ(testing::CountInvalid(*with), 0);
+}
+
+TEST(PolishTest, OnlyGetmePolishes) {
+  for (Method method :
+       {Method::kSimultaneous, Method::kSequential, Method::kWarpage, Method::kSmartLaplace}) {
+    auto without = meshgen::HybridBlock(5, 5, 4, 0.3, 5);
+    auto with = meshgen::HybridBlock(5, 5, 4, 0.3, 5);
+    ASSERT_TRUE(without.ok() && with.ok());
+    SmoothingParams params = ShortGetme(false, true);
+    params.method = method;
+    ASSERT_TRUE(Smooth(*without, params).ok());
+    params.polish = true;
+    auto result = Smooth(*with, params);
+    ASSERT_TRUE(result.ok()) << result.status();
+    EXPECT_EQ(result->iterations_polish, 0) << MethodName(method);
+    EXPECT_TRUE(testing::CoordinateSnapshot(*with) == testing::CoordinateSnapshot(*without))
+        << MethodName(method);
+  }
+}
+
+TEST(PolishTest, SameCoordinatesForAnyThreadCount) {
+  std::vector<testing::CoordinateSnapshot> results;
+  std::vector<SmoothingResult> reports;
+  for (int threads : {1, 2, 3}) {
+    auto mesh = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
+    ASSERT_TRUE(mesh.ok()) << mesh.status();
+    SmoothingParams params = ShortGetme(true, true);
+    params.threads = threads;
+    auto result = Smooth(*mesh, params);
+    ASSERT_TRUE(result.ok()) << result.status();
+    EXPECT_EQ(result->threads, threads);
+    results.emplace_back(*mesh);
+    reports.push_back(*result);
+  }
+  for (std::size_t i = 1; i < results.size(); ++i) {
+    EXPECT_TRUE(results[i] == results[0]) << "threads " << i + 1 << " differ from 1 thread";
+    EXPECT_EQ(reports[i].after.q_mean, reports[0].after.q_mean);
+    EXPECT_EQ(reports[i].after.q_min, reports[0].after.q_min);
+    EXPECT_EQ(reports[i].iterations_polish, reports[0].iterations_polish);
+  }
+  // The polish did move nodes, so the comparison is not vacuous.
+  auto unpolished = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
+  ASSERT_TRUE(unpolished.ok());
+  SmoothingParams params = ShortGetme(false, true);
+  params.threads = 1;
+  ASSERT_TRUE(Smooth(*unpolished, params).ok());
+  EXPECT_FALSE(testing::CoordinateSnapshot(*unpolished) == results[0]);
+}
+
+TEST(PolishTest, CancelledBeforeThePolishLeavesAValidMesh) {
+  auto mesh = meshgen::HybridBlock(6, 6, 5, 0.3, 9);
+  ASSERT_TRUE(mesh.ok());
+  CancellationToken cancel;
+  SmoothingParams params = ShortGetme(true, true);
+  // Cancel at the sequential substep's final event, i.e. just before the polish starts.
+  auto result = Smooth(
+      *mesh, params,
+      [&](const ProgressEvent& event) {
+        if (event.phase == Phase::kSequential && event.phase_done) cancel.Cancel();
+      },
+      &cancel);
+  EXPECT_EQ(result.status().code(), absl::StatusCode::kCancelled) << result.status();
+  EXPECT_NE(result.status().message().find("polish"), std::string::npos) << result.status();
+  EXPECT_EQ(testing::CountInvalid(*mesh), 0);
+}
+
+TEST(PolishTest, ParametersAreValidated) {
+  SmoothingParams params;
+  EXPECT_FALSE(params.polish);
+  params.polish_tolerance = -1.0;
+  EXPECT_NE(params.Validate().message().find("polish_tolerance"), std::string::npos);
+  params = SmoothingParams();
+  params.polish_max_sweeps = -1;
+  EXPECT_NE(params.Validate().message().find("polish_max_sweeps"), std::string::npos);
+  params = SmoothingParams();
+  params.polish_backtracking_steps = 31;
+  EXPECT_NE(params.Validate().message().find("polish_backtracking_steps"), std::string::npos);
+  params.polish_backtracking_steps = 0;
+  EXPECT_TRUE(params.Validate().ok());
+}
+
+}  // namespace
+}  // namespace getme
