@@ -120,24 +120,12 @@ TEST(PolishTest, OnlyGetmePolishes) {
 }
 
 TEST(PolishTest, SameCoordinatesForAnyThreadCount) {
-  std::vector<testing::CoordinateSnapshot> results;
-  std::vector<SmoothingResult> reports;
-  for (int threads : {1, 2, 3}) {
-    auto mesh = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
-    ASSERT_TRUE(mesh.ok()) << mesh.status();
-    SmoothingParams params = ShortGetme(true, true);
-    params.threads = threads;
-    auto result = Smooth(*mesh, params);
-    ASSERT_TRUE(result.ok()) << result.status();
-    EXPECT_EQ(result->threads, threads);
-    results.emplace_back(*mesh);
-    reports.push_back(*result);
-  }
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    EXPECT_TRUE(results[i] == results[0]) << "threads " << i + 1 << " differ from 1 thread";
-    EXPECT_EQ(reports[i].after.q_mean, reports[0].after.q_mean);
-    EXPECT_EQ(reports[i].after.q_min, reports[0].after.q_min);
-    EXPECT_EQ(reports[i].iterations_polish, reports[0].iterations_polish);
+  const std::vector<testing::ThreadCountRun> runs = testing::SmoothAtThreadCounts(
+      [] { return meshgen::HybridBlock(10, 10, 8, 0.3, 7); }, ShortGetme(true, true), {1, 2, 3});
+  ASSERT_EQ(runs.size(), 3u);
+  testing::ExpectSameForEveryThreadCount(runs, {1, 2, 3});
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_EQ(runs[i].result.iterations_polish, runs[0].result.iterations_polish);
   }
   // The polish did move nodes, so the comparison is not vacuous.
   auto unpolished = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
@@ -145,7 +133,7 @@ TEST(PolishTest, SameCoordinatesForAnyThreadCount) {
   SmoothingParams params = ShortGetme(false, true);
   params.threads = 1;
   ASSERT_TRUE(Smooth(*unpolished, params).ok());
-  EXPECT_FALSE(testing::CoordinateSnapshot(*unpolished) == results[0]);
+  EXPECT_FALSE(testing::CoordinateSnapshot(*unpolished) == runs[0].coordinates);
 }
 
 TEST(PolishTest, CancelledBeforeThePolishLeavesAValidMesh) {

@@ -42,4 +42,39 @@ std::int64_t CountInvalid(const Mesh& mesh) {
   return invalid;
 }
 
+std::vector<ThreadCountRun> SmoothAtThreadCounts(
+    const std::function<absl::StatusOr<Mesh>()>& make_mesh, SmoothingParams params,
+    std::initializer_list<int> thread_counts) {
+  std::vector<ThreadCountRun> runs;
+  for (const int threads : thread_counts) {
+    absl::StatusOr<Mesh> mesh = make_mesh();
+    if (!mesh.ok()) {
+      ADD_FAILURE() << mesh.status();
+      break;
+    }
+    params.threads = threads;
+    absl::StatusOr<SmoothingResult> result = Smooth(*mesh, params);
+    if (!result.ok()) {
+      ADD_FAILURE() << "threads " << threads << ": " << result.status();
+      break;
+    }
+    runs.push_back({CoordinateSnapshot(*mesh), *std::move(result)});
+  }
+  return runs;
+}
+
+void ExpectSameForEveryThreadCount(const std::vector<ThreadCountRun>& runs,
+                                   std::initializer_list<int> thread_counts) {
+  ASSERT_EQ(runs.size(), thread_counts.size());
+  std::size_t i = 0;
+  for (const int threads : thread_counts) {
+    const ThreadCountRun& run = runs[i++];
+    EXPECT_EQ(run.result.threads, threads);
+    EXPECT_TRUE(run.coordinates == runs[0].coordinates)
+        << "threads " << threads << " differ from " << *thread_counts.begin() << " thread(s)";
+    EXPECT_EQ(run.result.after.q_mean, runs[0].result.after.q_mean);
+    EXPECT_EQ(run.result.after.q_min, runs[0].result.after.q_min);
+  }
+}
+
 }  // namespace getme::testing

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "getme/mesh/mesh.h"
 #include "getme/smoothing/smoother.h"
 
@@ -18,6 +21,21 @@ struct CoordinateSnapshot {
   explicit CoordinateSnapshot(const Mesh& mesh);
   bool operator==(const CoordinateSnapshot&) const = default;
 };
+
+// One Smooth() run per thread count, each on a fresh mesh from `make_mesh`: what the
+// thread-determinism tests compare. A failed generation or run is a test failure and ends the
+// list early.
+struct ThreadCountRun {
+  CoordinateSnapshot coordinates;
+  SmoothingResult result;
+};
+std::vector<ThreadCountRun> SmoothAtThreadCounts(
+    const std::function<absl::StatusOr<Mesh>()>& make_mesh, SmoothingParams params,
+    std::initializer_list<int> thread_counts);
+// Each run reports its thread count, and has the first run's coordinates, q_min and q_mean, bit
+// for bit.
+void ExpectSameForEveryThreadCount(const std::vector<ThreadCountRun>& runs,
+                                   std::initializer_list<int> thread_counts);
 
 // Nodes a smoother must leave untouched under `params`: caller-fixed, or boundary if fix_boundary.
 std::vector<NodeId> ImmovableNodes(const Mesh& mesh, const SmoothingParams& params);

@@ -13,33 +13,22 @@ namespace {
 class ThreadDeterminismTest : public ::testing::TestWithParam<Method> {};
 
 TEST_P(ThreadDeterminismTest, SameCoordinatesForAnyThreadCount) {
-  std::vector<testing::CoordinateSnapshot> results;
-  std::vector<SmoothingResult> reports;
-  for (int threads : {1, 2, 3, 4}) {
-    auto mesh = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
-    ASSERT_TRUE(mesh.ok()) << mesh.status();
-    SmoothingParams params;
-    params.method = GetParam();
-    params.threads = threads;
-    params.simultaneous_max_iterations = 15;
-    params.sequential_max_iterations = 3000;
-    auto result = Smooth(*mesh, params);
-    ASSERT_TRUE(result.ok()) << result.status();
-    EXPECT_EQ(result->threads, threads);
-    results.emplace_back(*mesh);
-    reports.push_back(*result);
-  }
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    EXPECT_TRUE(results[i] == results[0]) << "threads " << i + 1 << " differ from 1 thread";
-    EXPECT_EQ(reports[i].after.q_mean, reports[0].after.q_mean);
-    EXPECT_EQ(reports[i].after.q_min, reports[0].after.q_min);
-    EXPECT_EQ(reports[i].iterations_simultaneous, reports[0].iterations_simultaneous);
-    EXPECT_EQ(reports[i].iterations_sequential, reports[0].iterations_sequential);
+  SmoothingParams params;
+  params.method = GetParam();
+  params.simultaneous_max_iterations = 15;
+  params.sequential_max_iterations = 3000;
+  const std::vector<testing::ThreadCountRun> runs = testing::SmoothAtThreadCounts(
+      [] { return meshgen::HybridBlock(10, 10, 8, 0.3, 7); }, params, {1, 2, 3, 4});
+  ASSERT_EQ(runs.size(), 4u);
+  testing::ExpectSameForEveryThreadCount(runs, {1, 2, 3, 4});
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_EQ(runs[i].result.iterations_simultaneous, runs[0].result.iterations_simultaneous);
+    EXPECT_EQ(runs[i].result.iterations_sequential, runs[0].result.iterations_sequential);
   }
   // The smoothing did move nodes, so the comparison is not vacuous.
   auto original = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
   ASSERT_TRUE(original.ok());
-  EXPECT_FALSE(testing::CoordinateSnapshot(*original) == results[0]);
+  EXPECT_FALSE(testing::CoordinateSnapshot(*original) == runs[0].coordinates);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ThreadDeterminismTest,
