@@ -196,24 +196,20 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   }
   if (wrong_node_count_.has_value()) return *wrong_node_count_;
 
-  // Number the elements: in insertion order, or type by type (each type keeps insertion order).
+  // Number the elements: in insertion order (each element's position within its type block is
+  // its rank among the elements of its type added before it), or type by type in type_order_.
   mesh.block_index_.resize(element_count);
-  {
-    std::array<std::int32_t, kElementTypeCount> added{};
-    std::vector<std::int32_t> index_in_type(element_count);
-    for (std::int64_t e = 0; e < element_count; ++e) {
-      index_in_type[e] = added[TypeIndex(mesh.element_type_[e])]++;
-    }
-    if (type_order_.has_value()) {
-      std::int64_t next = 0;
-      for (const ElementType type : *type_order_) {
-        for (std::int32_t i = 0; i < added[TypeIndex(type)]; ++i, ++next) {
-          mesh.element_type_[next] = type;
-          mesh.block_index_[next] = i;
-        }
+  std::array<std::int32_t, kElementTypeCount> added{};
+  for (std::int64_t e = 0; e < element_count; ++e) {
+    mesh.block_index_[e] = added[TypeIndex(mesh.element_type_[e])]++;
+  }
+  if (type_order_.has_value()) {
+    std::int64_t next = 0;
+    for (const ElementType type : *type_order_) {
+      for (std::int32_t i = 0; i < added[TypeIndex(type)]; ++i, ++next) {
+        mesh.element_type_[next] = type;
+        mesh.block_index_[next] = i;
       }
-    } else {
-      mesh.block_index_ = std::move(index_in_type);
     }
   }
 
