@@ -34,14 +34,14 @@ def row(name, method, result):
         return f"| {name} | {method} | failed: {result.get('message', '')} |||||||"
     iterations = "/".join(str(result[k]) for k in (
         "iterations_untangle", "iterations_simultaneous", "iterations_sequential",
-        "iterations_laplace"))
+        "iterations_laplace", "iterations_polish"))
     return (f"| {name} | {method} | {iterations} | {result['q_min_before']:.4f} / "
             f"{result['q_mean_before']:.4f} | {result['q_min']:.4f} / {result['q_mean']:.4f} | "
             f"{result['invalid_before']} → {result['invalid']} | {result['seconds']:.3f} | "
             f"{result['threads']} |")
 
 
-HEADER = ("| mesh | method | iterations (untangle/sim./seq./Laplace) | q_min / q_mean before | "
+HEADER = ("| mesh | method | iterations (untangle/sim./seq./Laplace/polish) | q_min / q_mean before | "
           "q_min / q_mean after | invalid | seconds | threads |\n|---|---|---|---|---|---|---|---|")
 
 

@@ -12,6 +12,7 @@ const SVG = 'http://www.w3.org/2000/svg';
 const PHASE_NAMES = {
   PHASE_UNTANGLE: 'untangle', PHASE_SIMULTANEOUS: 'simultaneous', PHASE_SEQUENTIAL: 'sequential',
   PHASE_WARPAGE: 'warpage', PHASE_SMART_LAPLACE: 'smart Laplace', PHASE_LAPLACE: 'Laplace',
+  PHASE_POLISH: 'polish',
 };
 const PHASE_COLOURS = ['#eef3ff', '#fff4e8', '#eefaf0', '#f6eefc'];
 const FINAL_STATES = new Set(['SUCCEEDED', 'FAILED', 'CANCELLED']);
@@ -110,7 +111,8 @@ function progressOf(job) {
   if (state === 'QUEUED') return 'waiting for a worker';
   if (!latest.phase || latest.phase === 'PHASE_UNSPECIFIED') return '';
   const phase = PHASE_NAMES[latest.phase] || latest.phase;
-  const unit = latest.phase === 'PHASE_SEQUENTIAL' || latest.phase === 'PHASE_WARPAGE' ? 'picks' : 'iterations';
+  const unit = latest.phase === 'PHASE_SEQUENTIAL' || latest.phase === 'PHASE_WARPAGE' ? 'picks'
+    : latest.phase === 'PHASE_POLISH' ? 'sweeps' : 'iterations';
   const count = `${phase} · ${Number(latest.iteration).toLocaleString()} ${unit}`;
   return state === 'RUNNING' ? count : `${count} · ${latest.elapsedSeconds.toFixed(1)} s`;
 }

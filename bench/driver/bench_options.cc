@@ -29,6 +29,7 @@ Runs:
   --repeats N             runs per measurement; the median is reported (default 3)
   --free-boundary         boundary nodes may move (nodes marked `fixed` stay)
   --literal               the paper's algorithm, safeguards off (as `getme smooth --literal`)
+  --no-polish             end --method getme after the sequential substep (no polish stage)
   --max-iterations N      cap every phase at N iterations (sequential: picks)
   --target-q-mean Q       also report the time until q_mean first reaches Q
 Output:
@@ -85,6 +86,7 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
   const cmdline::FlagTable flags = {
       {"--free-boundary", {false, cmdline::SetTrue(options.free_boundary)}},
       {"--literal", {false, cmdline::SetTrue(options.literal)}},
+      {"--no-polish", {false, cmdline::SetTrue(options.no_polish)}},
       {"--write-meshes", {false, cmdline::SetTrue(options.write_meshes)}},
       {"--service", {false, cmdline::SetTrue(options.service)}},
       {"--mesh",

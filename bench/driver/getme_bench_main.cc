@@ -39,6 +39,7 @@ std::string SmoothingOptionsText(const BenchOptions& options) {
   std::vector<std::string> flags;
   if (options.free_boundary) flags.push_back("--free-boundary");
   if (options.literal) flags.push_back("--literal");
+  if (options.no_polish) flags.push_back("--no-polish");
   if (options.max_iterations.has_value()) {
     flags.push_back(absl::StrCat("--max-iterations ", *options.max_iterations));
   }
@@ -73,6 +74,7 @@ SmoothingParams ParamsFor(const BenchOptions& options, Method method, int thread
   smooth.threads = threads;
   smooth.free_boundary = options.free_boundary;
   smooth.literal = options.literal;
+  smooth.no_polish = options.no_polish;
   smooth.max_iterations = options.max_iterations;
   return cmdline::ToSmoothingParams(smooth);
 }

@@ -167,7 +167,8 @@ absl::Status WriteTrace(const std::string& path, const Measurement& measurement,
 std::string MarkdownSummary(const std::vector<Measurement>& measurements,
                             const std::vector<BenchmarkMesh>& meshes) {
   std::string table =
-      "| mesh | elements | method | threads | mode | iterations (untangle/sim./seq./Laplace) | "
+      "| mesh | elements | method | threads | mode | iterations "
+      "(untangle/sim./seq./Laplace/polish) | "
       "q_min before → after | q_mean before → after | w_max / w_mean after | wall s, median "
       "(min–max) | s to 99 % gain | s to target | peak RSS MB |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -184,15 +185,16 @@ std::string MarkdownSummary(const std::vector<Measurement>& measurements,
     const std::optional<Spread> rss = SpreadOver(measurement, kPeakRss);
     absl::StrAppendFormat(
         &table,
-        "| %s | %d | %s | %d | %s | %d/%d/%d/%d | %.4f → %.4f | %.4f → %.4f | %.4f / %.4f "
+        "| %s | %d | %s | %d | %s | %d/%d/%d/%d/%d | %.4f → %.4f | %.4f → %.4f | %.4f / %.4f "
         "| %s | %s | %s | %.0f |%s\n",
         measurement.mesh, mesh != nullptr ? mesh->mesh.element_count() : 0,
         MethodName(measurement.method), measurement.threads, RunModeName(measurement.mode),
         result.iterations_untangle, result.iterations_simultaneous, result.iterations_sequential,
-        result.iterations_laplace, result.before.q_min, result.after.q_min, result.before.q_mean,
-        result.after.q_mean, result.after.warpage_max, result.after.warpage_mean,
-        Seconds(SpreadOver(measurement, kWall)), Seconds(SpreadOver(measurement, kTo99)),
-        Seconds(SpreadOver(measurement, kToTarget)), rss.has_value() ? rss->median / 1e6 : 0.0,
+        result.iterations_laplace, result.iterations_polish, result.before.q_min,
+        result.after.q_min, result.before.q_mean, result.after.q_mean, result.after.warpage_max,
+        result.after.warpage_mean, Seconds(SpreadOver(measurement, kWall)),
+        Seconds(SpreadOver(measurement, kTo99)), Seconds(SpreadOver(measurement, kToTarget)),
+        rss.has_value() ? rss->median / 1e6 : 0.0,
         RepeatsAgree(measurement) ? "" : " repeats differ!");
   }
   return table;

@@ -38,10 +38,13 @@ Options:
                        laplace
   --threads N          worker threads; 0 = all cores (default). Results do not depend on it.
   --max-iterations N   cap on the iterations of every phase (untangle, simultaneous,
-                       sequential, Laplace)
+                       sequential, Laplace; polish: sweeps)
   --free-boundary      let boundary nodes move too
   --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
   --no-untangle        refuse a mesh with invalid elements instead of untangling it
+  --no-polish          end --method getme after the sequential substep: no polish stage,
+                       which otherwise raises q_mean to the global optimiser's level
+                       without lowering q_min (docs/quality.md#polish)
   --fix-physical G     keep the nodes of group G fixed: a Gmsh physical group by name, tag or
                        DIM:TAG; a number also matches gmsh:physical / medit:ref cell data.
                        Repeatable.
@@ -278,6 +281,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--free-boundary", {false, SetTrue(options.smoothing.free_boundary)}},
       {"--literal", {false, SetTrue(options.smoothing.literal)}},
       {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
+      {"--no-polish", {false, SetTrue(options.smoothing.no_polish)}},
       {"--fix-physical",
        {true,
         [&](const std::string& value) {

@@ -9,11 +9,13 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
   params.fix_boundary = !flags.free_boundary;
   params.untangle = !flags.no_untangle;
   if (flags.literal) params.UseLiteralPaperAlgorithm();
+  if (flags.no_polish) params.polish = false;
   if (flags.max_iterations) {
     params.untangle_max_iterations = *flags.max_iterations;
     params.simultaneous_max_iterations = *flags.max_iterations;
     params.sequential_max_iterations = *flags.max_iterations;
     params.laplace_max_iterations = *flags.max_iterations;
+    params.polish_max_sweeps = *flags.max_iterations;
   }
   return params;
 }

@@ -8,8 +8,8 @@
 namespace getme::cmdline {
 
 // The flags that select the engine's parameters, as `getme smooth` spells them: --method,
-// --threads, --max-iterations, --free-boundary, --literal, --no-untangle. getme-bench takes a
-// subset with the same meaning.
+// --threads, --max-iterations, --free-boundary, --literal, --no-untangle, --no-polish.
+// getme-bench takes a subset with the same meaning.
 struct SmoothingFlags {
   Method method = Method::kGetme;
   int threads = 0;  // 0 = all cores
@@ -17,10 +17,11 @@ struct SmoothingFlags {
   bool free_boundary = false;
   bool literal = false;      // the paper's literal algorithm, safeguards off
   bool no_untangle = false;  // refuse invalid input instead of untangling it
+  bool no_polish = false;    // end --method getme after the sequential substep
 };
 
-// The engine parameters the flags select: method, threads, fix_boundary, untangle, the literal
-// algorithm, and the iteration cap applied to every phase.
+// The engine parameters the flags select: method, threads, fix_boundary, untangle, polish, the
+// literal algorithm, and the iteration cap applied to every phase (polish: sweeps).
 SmoothingParams ToSmoothingParams(const SmoothingFlags& flags);
 
 }  // namespace getme::cmdline

@@ -53,6 +53,7 @@ std::string SmoothResultJson(const SmoothReport& report) {
       .AddInt("iterations_simultaneous", result.iterations_simultaneous)
       .AddInt("iterations_sequential", result.iterations_sequential)
       .AddInt("iterations_laplace", result.iterations_laplace)
+      .AddInt("iterations_polish", result.iterations_polish)
       .AddRaw("phases", phases)
       .AddDouble("seconds", result.seconds)
       .AddInt("threads", result.threads)

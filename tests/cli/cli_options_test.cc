@@ -13,6 +13,7 @@ TEST(CliOptions, LiteralSwitchesOffEverySafeguard) {
   EXPECT_EQ(params.sequential_backtracking_steps, 0);
   EXPECT_FALSE(params.sequential_transform_blockers);
   EXPECT_FALSE(params.untangle);
+  EXPECT_FALSE(params.polish);
   // Without the flags the safeguards and untangling are on (the defaults).
   auto defaults = ParseSmoothArguments({"in.vtk", "out.vtk"});
   ASSERT_TRUE(defaults.ok());
@@ -21,6 +22,18 @@ TEST(CliOptions, LiteralSwitchesOffEverySafeguard) {
   EXPECT_GT(default_params.sequential_backtracking_steps, 0);
   EXPECT_TRUE(default_params.sequential_transform_blockers);
   EXPECT_TRUE(default_params.untangle);
+  EXPECT_TRUE(default_params.polish);
+}
+
+TEST(CliOptions, NoPolishAndMaxIterationsReachThePolish) {
+  auto options = ParseSmoothArguments({"in.vtk", "out.vtk", "--no-polish"});
+  ASSERT_TRUE(options.ok()) << options.status();
+  EXPECT_FALSE(ToSmoothingParams(*options).polish);
+  EXPECT_TRUE(ToSmoothingParams(*options).sequential_transform_blockers);  // nothing else changes
+  options = ParseSmoothArguments({"in.vtk", "out.vtk", "--max-iterations", "3"});
+  ASSERT_TRUE(options.ok()) << options.status();
+  EXPECT_TRUE(ToSmoothingParams(*options).polish);
+  EXPECT_EQ(ToSmoothingParams(*options).polish_max_sweeps, 3);
 }
 
 }  // namespace

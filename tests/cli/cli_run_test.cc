@@ -75,8 +75,8 @@ TEST(CliSmooth, JsonLinesAndAVerifiableOutputFile) {
 
   const std::vector<JsonValue> lines = JsonLines(run.out);
   ASSERT_GE(lines.size(), 2u);
-  const std::set<std::string> phases = {"untangle", "simultaneous",  "sequential",
-                                        "warpage",  "smart-laplace", "laplace"};
+  const std::set<std::string> phases = {"untangle",      "simultaneous", "sequential", "warpage",
+                                        "smart-laplace", "laplace",      "polish"};
   int phase_ends = 0;
   for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
     const JsonValue& event = lines[i];
@@ -90,14 +90,14 @@ TEST(CliSmooth, JsonLinesAndAVerifiableOutputFile) {
     EXPECT_EQ(event.Find("phase_done")->kind, JsonValue::Kind::kBool);
     phase_ends += event.Find("phase_done")->boolean ? 1 : 0;
   }
-  EXPECT_EQ(phase_ends, 2);  // GETMe: simultaneous, then sequential
+  EXPECT_EQ(phase_ends, 3);  // GETMe: simultaneous, then sequential, then the polish
 
   const JsonValue& result = lines.back();
   ASSERT_EQ(String(result, "event"), "result");
   for (const char* key :
        {"nodes", "elements", "q_min_before", "q_mean_before", "q_min", "q_mean", "invalid",
         "invalid_before", "iterations_untangle", "iterations_simultaneous", "iterations_sequential",
-        "iterations_laplace", "seconds", "threads"}) {
+        "iterations_laplace", "iterations_polish", "seconds", "threads"}) {
     Number(result, key);
   }
   EXPECT_EQ(Number(result, "nodes"), 1331);

@@ -291,6 +291,29 @@ TYPED_TEST(MeanRatioDerivativesTest, CostIsTheMeanOfInverseTetrahedralMeanRatios
   ::testing::Test::RecordProperty("worst_error_over_tolerance", Scientific(worst));
 }
 
+// The polish evaluates trial positions with CostAndQuality: its quality must be the very bits
+// of MeanRatioOrInvalid (the polish writes it into the per-element qualities the result check
+// compares against a fresh evaluation) and its cost those of InverseMeanRatioCost.
+TYPED_TEST(MeanRatioDerivativesTest, CostAndQualityEqualTheSeparateFunctionsBitForBit) {
+  constexpr ElementType kType = TypeParam::kType;
+  UnitRandom random(1407 + TypeIndex(kType));
+  int invalid = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    ElementNodes<kType> p = TrialElement<kType>(random, trial);
+    // Every third element mirrored (x → −x): every node tetrahedron inverted.
+    if (trial % 3 == 2) {
+      for (Vec3& node : p) node.x() = -node.x();
+    }
+    const InverseMeanRatioCostAndQuality both = CostAndQuality<kType>(p);
+    EXPECT_EQ(both.quality, MeanRatioOrInvalid<kType>(p)) << "trial " << trial;
+    EXPECT_EQ(both.cost, InverseMeanRatioCost<kType>(p)) << "trial " << trial;
+    invalid += both.quality == kInvalidQuality;
+  }
+  // Both branches ran: the mirrored elements are inverted (cost +∞, quality kInvalidQuality).
+  EXPECT_GT(invalid, 0);
+  EXPECT_LT(invalid, kTrials);
+}
+
 // Each node tetrahedron of a regular element (unit edges) is the target W up to a rotation
 // R_k (S_k = R_k), where 1/q_k takes its minimum 1: cost 1 and zero gradient at every node. There
 // the header's Hessian reduces to (1/3)(2|b|² I + (2/3) u uᵗ) per node tetrahedron, u = R_k b with

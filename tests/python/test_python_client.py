@@ -265,17 +265,30 @@ class Progress(unittest.TestCase):
         self.assertFalse(any(e.final for e in events[:-1]))
         self.assertEqual({e.job_id for e in events}, {report.job_id})
         phases = [e.phase for e in events if not e.final]
-        self.assertEqual(sorted(set(phases), key=phases.index), ["simultaneous", "sequential"])
-        self.assertEqual(phases, sorted(phases, key=["simultaneous", "sequential"].index))
-        # One event per simultaneous iteration, then each phase's end with the state it hands on.
+        order = ["simultaneous", "sequential", "polish"]
+        self.assertEqual(sorted(set(phases), key=phases.index), order)
+        self.assertEqual(phases, sorted(phases, key=order.index))
+        # One event per simultaneous iteration (polish: per sweep), then each phase's end with the
+        # state it hands on.
         self.assertEqual(sum(e.phase == "simultaneous" and not e.phase_done for e in events),
                          report.iterations["simultaneous"])
+        self.assertEqual(sum(e.phase == "polish" and not (e.phase_done or e.final) for e in events),
+                         report.iterations["polish"])
+        self.assertGreaterEqual(report.iterations["polish"], 1)
         ends = [e for e in events if e.phase_done]
         self.assertEqual([(e.phase, e.iteration, e.q_min, e.q_mean) for e in ends],
                          [(p.phase, p.iterations, p.q_min, p.q_mean) for p in report.phases])
         self.assertEqual((events[-1].q_min, events[-1].q_mean), (report.q_min, report.q_mean))
         elapsed = [e.elapsed_seconds for e in events]
         self.assertEqual(elapsed, sorted(elapsed))
+
+    def test_polish_false_ends_after_the_sequential_substep(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        events = []
+        _, report = getme.smooth(mesh, SERVER.address, progress=events.append, polish=False)
+        self.assertEqual(report.iterations["polish"], 0)
+        self.assertEqual([p.phase for p in report.phases], ["simultaneous", "sequential"])
+        self.assertNotIn("polish", {e.phase for e in events})
 
     def test_an_exception_in_the_callback_cancels_and_propagates(self):
         mesh = meshio.read(mesh_path("surface.vtk"))

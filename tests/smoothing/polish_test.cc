@@ -91,6 +91,7 @@ TEST(PolishTest, PolishAfterFullGetmeKeepsQMinAndRaisesQMean) {
   ASSERT_TRUE(without.ok() && with.ok());
   SmoothingParams params;
   params.threads = 2;
+  params.polish = false;
   auto plain = Smooth(*without, params);
   params.polish = true;
   auto polished = Smooth(*with, params);
@@ -155,7 +156,19 @@ TEST(PolishTest, CancelledBeforeThePolishLeavesAValidMesh) {
 
 TEST(PolishTest, ParametersAreValidated) {
   SmoothingParams params;
-  EXPECT_FALSE(params.polish);
+  EXPECT_TRUE(params.polish);  // on by default for Method::kGetme (issue 14)
+  params.UseLiteralPaperAlgorithm();
+  EXPECT_FALSE(params.polish);  // not part of the paper
+  params = SmoothingParams();
+  params.polish_node_tolerance = -1.0;
+  EXPECT_NE(params.Validate().message().find("polish_node_tolerance"), std::string::npos);
+  params = SmoothingParams();
+  params.simultaneous_handoff_window = -1;
+  EXPECT_NE(params.Validate().message().find("simultaneous_handoff_window"), std::string::npos);
+  params = SmoothingParams();
+  params.simultaneous_handoff_gain = -1.0;
+  EXPECT_NE(params.Validate().message().find("simultaneous_handoff_gain"), std::string::npos);
+  params = SmoothingParams();
   params.polish_tolerance = -1.0;
   EXPECT_NE(params.Validate().message().find("polish_tolerance"), std::string::npos);
   params = SmoothingParams();

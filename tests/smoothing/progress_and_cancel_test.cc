@@ -21,11 +21,23 @@ TEST(ProgressTest, OneEventPerIterationThenAFinalEventPerPhase) {
   auto result = Smooth(mesh, params, [&](const ProgressEvent& event) { events.push_back(event); });
   ASSERT_TRUE(result.ok()) << result.status();
 
-  std::vector<ProgressEvent> simultaneous, sequential;
+  std::vector<ProgressEvent> simultaneous, sequential, polish;
   for (const ProgressEvent& event : events) {
-    (event.phase == Phase::kSimultaneous ? simultaneous : sequential).push_back(event);
-    EXPECT_TRUE(event.phase == Phase::kSimultaneous || event.phase == Phase::kSequential);
+    switch (event.phase) {
+      case Phase::kSimultaneous:
+        simultaneous.push_back(event);
+        break;
+      case Phase::kSequential:
+        sequential.push_back(event);
+        break;
+      case Phase::kPolish:
+        polish.push_back(event);
+        break;
+      default:
+        ADD_FAILURE() << "unexpected phase " << PhaseName(event.phase);
+    }
   }
+  ASSERT_EQ(events.size(), simultaneous.size() + sequential.size() + polish.size());
   // Phases in order: all simultaneous events come before the sequential ones.
   ASSERT_FALSE(simultaneous.empty());
   ASSERT_FALSE(sequential.empty());
@@ -50,8 +62,25 @@ TEST(ProgressTest, OneEventPerIterationThenAFinalEventPerPhase) {
   EXPECT_EQ(sequential[0].iteration, 500);
   EXPECT_TRUE(sequential.back().phase_done);
   EXPECT_EQ(sequential.back().iteration, result->iterations_sequential);
-  EXPECT_EQ(sequential.back().q_min, result->after.q_min);
-  EXPECT_EQ(sequential.back().q_mean, result->after.q_mean);
+  EXPECT_EQ(sequential.back().q_min, result->phases[1].q_min);
+  EXPECT_EQ(sequential.back().q_mean, result->phases[1].q_mean);
+  // Sequential events all come before the polish's.
+  EXPECT_EQ(events[simultaneous.size() + sequential.size() - 1].phase, Phase::kSequential);
+
+  // Polish: sweeps 1, 2, ..., n, then the phase-done event whose state is the result.
+  const std::int64_t sweeps = result->iterations_polish;
+  ASSERT_GE(sweeps, 1);
+  ASSERT_EQ(static_cast<std::int64_t>(polish.size()), sweeps + 1);
+  for (std::int64_t i = 0; i < sweeps; ++i) {
+    EXPECT_EQ(polish[i].iteration, i + 1);
+    EXPECT_FALSE(polish[i].phase_done);
+  }
+  EXPECT_TRUE(polish.back().phase_done);
+  EXPECT_EQ(polish.back().q_min, result->after.q_min);
+  EXPECT_EQ(polish.back().q_mean, result->after.q_mean);
+  ASSERT_EQ(result->phases.size(), 3u);
+  EXPECT_EQ(result->phases[2].phase, Phase::kPolish);
+  EXPECT_EQ(result->phases[2].iterations, sweeps);
 
   for (std::size_t i = 1; i < events.size(); ++i) {
     EXPECT_GE(events[i].elapsed_seconds, events[i - 1].elapsed_seconds);

@@ -19,12 +19,13 @@ TEST(WireEnums, EveryMethodRoundTripsAndUnspecifiedIsGetme) {
 
 TEST(WireEnums, EveryPhaseRoundTripsAndUnknownIsNone) {
   for (Phase phase : {Phase::kUntangle, Phase::kSimultaneous, Phase::kSequential, Phase::kWarpage,
-                      Phase::kSmartLaplace, Phase::kLaplace}) {
+                      Phase::kSmartLaplace, Phase::kLaplace, Phase::kPolish}) {
     const v1::Phase wire = ToWirePhase(phase);
     EXPECT_NE(wire, v1::PHASE_UNSPECIFIED) << PhaseName(phase);
     EXPECT_EQ(FromWirePhase(wire), phase) << PhaseName(phase);
   }
   EXPECT_EQ(ToWirePhase(Phase::kUntangle), v1::PHASE_UNTANGLE);
+  EXPECT_EQ(ToWirePhase(Phase::kPolish), v1::PHASE_POLISH);
   EXPECT_EQ(FromWirePhase(v1::PHASE_UNSPECIFIED), std::nullopt);
   EXPECT_EQ(FromWirePhase(42), std::nullopt);
 }

@@ -67,6 +67,45 @@ TEST(ToWireParameters, ChangedFieldsAreSent) {
   EXPECT_EQ(wire.simultaneous_sigma_max().prism(), 1.7);
   EXPECT_FALSE(wire.has_simultaneous_sigma_min());
   EXPECT_EQ(wire.threads(), 3);
+  // The literal algorithm has no polish: the switch is sent, as false.
+  ASSERT_TRUE(wire.has_polish());
+  EXPECT_FALSE(wire.polish());
+  EXPECT_FALSE(wire.has_polish_max_sweeps());
+}
+
+TEST(ToEngineParams, PolishFieldsRoundTrip) {
+  SmoothingParams params;
+  params.polish_tolerance = 3e-5;
+  params.polish_max_sweeps = 17;
+  params.polish_node_tolerance = 2e-7;
+  params.polish_backtracking_steps = 6;
+  params.simultaneous_handoff_window = 9;
+  params.simultaneous_handoff_gain = 5e-5;
+  const v1::SmoothingParameters wire = ToWireParameters(params);
+  EXPECT_FALSE(wire.has_polish());  // on is the default: not sent
+  EXPECT_EQ(wire.polish_max_sweeps(), 17);
+  absl::StatusOr<SmoothingParams> back = ToEngineParams(wire, 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_TRUE(back->polish);
+  EXPECT_EQ(back->polish_tolerance, 3e-5);
+  EXPECT_EQ(back->polish_max_sweeps, 17);
+  EXPECT_EQ(back->polish_node_tolerance, 2e-7);
+  EXPECT_EQ(back->polish_backtracking_steps, 6);
+  EXPECT_EQ(back->simultaneous_handoff_window, 9);
+  EXPECT_EQ(back->simultaneous_handoff_gain, 5e-5);
+
+  v1::SmoothingParameters off;
+  off.set_polish(false);
+  back = ToEngineParams(off, 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_FALSE(back->polish);
+
+  v1::SmoothingParameters bad;
+  bad.set_polish_max_sweeps(-2);
+  back = ToEngineParams(bad, 1);
+  EXPECT_EQ(back.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(back.status().message().find("polish_max_sweeps = -2"), std::string::npos)
+      << back.status();
 }
 
 TEST(FromWire, QualityMapsWedgesToPrismsAndProgressFields) {

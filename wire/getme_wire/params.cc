@@ -104,6 +104,21 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
     params.untangle_max_iterations = wire.untangle_max_iterations();
   }
   if (wire.has_free_boundary()) params.fix_boundary = !wire.free_boundary();
+  if (wire.has_polish()) params.polish = wire.polish();
+  if (wire.has_polish_tolerance()) params.polish_tolerance = wire.polish_tolerance();
+  if (wire.has_polish_max_sweeps()) params.polish_max_sweeps = wire.polish_max_sweeps();
+  if (wire.has_polish_node_tolerance()) {
+    params.polish_node_tolerance = wire.polish_node_tolerance();
+  }
+  if (wire.has_polish_backtracking_steps()) {
+    params.polish_backtracking_steps = wire.polish_backtracking_steps();
+  }
+  if (wire.has_simultaneous_handoff_window()) {
+    params.simultaneous_handoff_window = wire.simultaneous_handoff_window();
+  }
+  if (wire.has_simultaneous_handoff_gain()) {
+    params.simultaneous_handoff_gain = wire.simultaneous_handoff_gain();
+  }
   params.threads = wire.threads() > 0 ? wire.threads() : default_threads;
   if (wire.threads() < 0) {
     return absl::InvalidArgumentError(
@@ -157,6 +172,13 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.untangle_max_iterations, defaults.untangle_max_iterations, [&](std::int64_t v) { wire.set_untangle_max_iterations(v); });
   SetIfChanged(params.fix_boundary, defaults.fix_boundary, [&](bool v) { wire.set_free_boundary(!v); });
   SetIfChanged(params.threads, defaults.threads, [&](int v) { wire.set_threads(v); });
+  SetIfChanged(params.polish, defaults.polish, [&](bool v) { wire.set_polish(v); });
+  SetIfChanged(params.polish_tolerance, defaults.polish_tolerance, [&](double v) { wire.set_polish_tolerance(v); });
+  SetIfChanged(params.polish_max_sweeps, defaults.polish_max_sweeps, [&](std::int64_t v) { wire.set_polish_max_sweeps(v); });
+  SetIfChanged(params.polish_node_tolerance, defaults.polish_node_tolerance, [&](double v) { wire.set_polish_node_tolerance(v); });
+  SetIfChanged(params.polish_backtracking_steps, defaults.polish_backtracking_steps, [&](int v) { wire.set_polish_backtracking_steps(v); });
+  SetIfChanged(params.simultaneous_handoff_window, defaults.simultaneous_handoff_window, [&](std::int64_t v) { wire.set_simultaneous_handoff_window(v); });
+  SetIfChanged(params.simultaneous_handoff_gain, defaults.simultaneous_handoff_gain, [&](double v) { wire.set_simultaneous_handoff_gain(v); });
   // clang-format on
   return wire;
 }

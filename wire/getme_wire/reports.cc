@@ -83,6 +83,7 @@ v1::SmoothResult ToWireSmoothResult(const SmoothingResult& result, const MeshQua
   summary.set_iterations_simultaneous(result.iterations_simultaneous);
   summary.set_iterations_sequential(result.iterations_sequential);
   summary.set_iterations_laplace(result.iterations_laplace);
+  summary.set_iterations_polish(result.iterations_polish);
   summary.set_seconds(result.seconds);
   summary.set_threads(result.threads);
   return summary;
@@ -106,6 +107,7 @@ SmoothingResult FromWireResult(const v1::SmoothResult& result) {
   converted.iterations_simultaneous = result.iterations_simultaneous();
   converted.iterations_sequential = result.iterations_sequential();
   converted.iterations_laplace = result.iterations_laplace();
+  converted.iterations_polish = result.iterations_polish();
   converted.seconds = result.seconds();
   converted.threads = result.threads();
   return converted;

@@ -89,6 +89,7 @@ ITERATION_COUNTERS = (
     IterationCounter("simultaneous", "iterations_simultaneous", "simultaneous_max_iterations"),
     IterationCounter("sequential", "iterations_sequential", "sequential_max_iterations"),
     IterationCounter("laplace", "iterations_laplace", "laplace_max_iterations"),
+    IterationCounter("polish", "iterations_polish", "polish_max_sweeps"),
 )
 
 _PHASE_PREFIX = "PHASE_"

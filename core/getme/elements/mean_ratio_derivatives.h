@@ -40,9 +40,11 @@
 // are summed, then divided by K like the cost.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "getme/elements/element_quality.h"
 #include "getme/elements/element_tables.h"
 #include "getme/elements/vec3.h"
 
@@ -144,6 +146,42 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
 template <ElementType kType>
 inline double InverseMeanRatioCost(const ElementNodes<kType>& p) {
   return internal::InverseMeanRatioTerms<kType, 0>(p, -1, nullptr, nullptr);
+}
+
+// c(E) and the mean ratio q(E) of Def. 3 from one pass over the node tetrahedra: a polish trial
+// needs both (the cost to accept a step, q to keep q_min), and they share every cube root.
+// `quality` has the bits of MeanRatioOrInvalid (the same operations in the same order), so the
+// polish's per-element qualities match a fresh evaluation exactly; it is kInvalidQuality (and
+// `cost` +∞) for an element that is not valid.
+struct InverseMeanRatioCostAndQuality {
+  double cost;
+  double quality;
+};
+
+template <ElementType kType>
+inline InverseMeanRatioCostAndQuality CostAndQuality(const ElementNodes<kType>& p) {
+  using Table = ElementTable<kType>;
+  constexpr auto& w = Table::kTargetInverse;
+  constexpr double kTets = static_cast<double>(Table::kNodeTets.size());
+  double cost = 0.0;
+  double quality = 0.0;
+  for (const auto& t : Table::kNodeTets) {
+    const Vec3 d0 = p[t[1]] - p[t[0]];
+    const Vec3 d1 = p[t[2]] - p[t[0]];
+    const Vec3 d2 = p[t[3]] - p[t[0]];
+    const double det_d = d0.dot(d1.cross(d2));
+    if (!(det_d > 0.0)) return {std::numeric_limits<double>::infinity(), kInvalidQuality};
+    const Vec3 s0 = d0 * w[0][0];
+    const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
+    const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
+    const double det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
+    const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
+    const double root = std::cbrt(det_s * det_s);
+    cost += frobenius2 * (1.0 / (3.0 * root));
+    quality += 3.0 * root / frobenius2;
+  }
+  quality /= kTets;
+  return {cost * (1.0 / kTets), std::clamp(quality, 0.0, 1.0)};
 }
 
 // c(E) and ∂c/∂p_node. Past the barrier (cost +∞) the gradient is zero.

@@ -7,15 +7,6 @@
 
 namespace getme {
 
-// What the polish stage did.
-struct PolishSummary {
-  std::int64_t sweeps = 0;        // sweeps over all free nodes
-  std::int64_t moved_nodes = 0;   // accepted node steps, summed over the sweeps
-  double mean_cost_before = 0.0;  // mean over elements of InverseMeanRatioCost
-  double mean_cost_after = 0.0;
-  double seconds = 0.0;
-};
-
 // The polish stage of issue 14 (item 1), beyond the paper: GETMe's fixed point is not the
 // optimum of q_mean (the paper's own tables show GETMe ~0.01 below Mesquite's q_mean), so after
 // it each free node (context.movable) takes damped Newton steps on the summed inverse mean ratio
@@ -26,10 +17,10 @@ struct PolishSummary {
 //
 // Nodes are swept one colour of a node colouring (node_colouring.h) at a time: nodes of one
 // colour share no element, so they move in parallel and any thread count gives the same bits.
-// Sweeps stop when the mean cost falls by less than params.polish_tolerance of itself over a
-// sweep, or after params.polish_max_sweeps. Keeps context.quality up to date. Cancelled between
-// colours, with the mesh valid. It reports no progress events: that would need a new Phase,
-// and so new wire mappings.
-absl::StatusOr<PolishSummary> RunPolish(SmoothingContext& context);
+// Sweeps stop when the q_mean still to gain, extrapolated from the last two sweeps' gains, is
+// below params.polish_tolerance, when a sweep gains nothing, or after params.polish_max_sweeps.
+// One progress event per sweep (Phase::kPolish; reverted_nodes = free nodes whose step was
+// refused). Keeps context.quality up to date. Cancelled between colours, with the mesh valid.
+absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context);
 
 }  // namespace getme

@@ -16,6 +16,8 @@ const char* PhaseName(Phase phase) {
       return "smart-laplace";
     case Phase::kLaplace:
       return "laplace";
+    case Phase::kPolish:
+      return "polish";
   }
   return "unknown";
 }

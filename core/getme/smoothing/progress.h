@@ -7,11 +7,21 @@
 
 namespace getme {
 
-enum class Phase { kUntangle, kSimultaneous, kSequential, kWarpage, kSmartLaplace, kLaplace };
+// kPolish goes beyond the paper (polish.h); the others are its phases and baselines.
+enum class Phase {
+  kUntangle,
+  kSimultaneous,
+  kSequential,
+  kWarpage,
+  kSmartLaplace,
+  kLaplace,
+  kPolish,
+};
 
 const char* PhaseName(Phase phase);
 
-// One event per iteration of a phase (per sequential_cycle picks in the sequential phases),
+// One event per iteration of a phase (per sequential_cycle picks in the sequential phases, per
+// sweep over the free nodes in the polish),
 // the last one of each phase marked final. The service streams exactly these.
 struct ProgressEvent {
   Phase phase = Phase::kSimultaneous;

@@ -1,12 +1,13 @@
 #include "getme/smoothing/simultaneous_smoother.h"
 
 #include <cmath>
+#include <vector>
 
 #include "getme/smoothing/simultaneous_iteration.h"
 
 namespace getme {
 
-absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
+absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context, SimultaneousStop stop) {
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
   const double phase_start = context.ElapsedSeconds();
@@ -21,6 +22,9 @@ absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
   std::int64_t best_iteration = 0;
   NodePositions best_position;
   bool cancelled = false;
+  // q_mean after each iteration, index 0 the input: the hand-on rule looks a window back.
+  std::vector<double> q_mean_history = {current.q_mean};
+  const std::int64_t window = params.simultaneous_handoff_window;
 
   for (std::int64_t iteration = 1; iteration <= params.simultaneous_max_iterations; ++iteration) {
     if (context.Cancelled()) {
@@ -39,8 +43,12 @@ absl::StatusOr<PhaseSummary> RunSimultaneous(SmoothingContext& context) {
     } else if (best_iteration == iteration - 1) {
       best_position = step.previous_positions();
     }
-    const bool converged =
-        std::abs(current.q_mean - previous_q_mean) < params.simultaneous_tolerance;
+    q_mean_history.push_back(current.q_mean);
+    bool converged = std::abs(current.q_mean - previous_q_mean) < params.simultaneous_tolerance;
+    if (stop == SimultaneousStop::kHandOnToPolish && window > 0 && iteration >= window) {
+      const double gain = current.q_mean - q_mean_history[iteration - window];
+      converged |= gain < params.simultaneous_handoff_gain * static_cast<double>(window);
+    }
     const bool last = converged || iteration == params.simultaneous_max_iterations;
     context.Report({Phase::kSimultaneous, iteration, current.q_min, current.q_mean, current.invalid,
                     outcome.reverted_nodes, context.ElapsedSeconds(), false});

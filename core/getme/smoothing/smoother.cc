@@ -56,6 +56,9 @@ absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
       case Phase::kLaplace:
         result.iterations_laplace += phase->iterations;
         break;
+      case Phase::kPolish:
+        result.iterations_polish += phase->iterations;
+        break;
     }
     return absl::OkStatus();
   };
@@ -70,28 +73,32 @@ absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
   }
   switch (method) {
     case Method::kSimultaneous:
-      return record(RunSimultaneous(context));
+      return record(RunSimultaneous(context, SimultaneousStop::kSettled));
     case Method::kSequential:
       return record(RunSequential(context, SelectionCriterion::kMeanRatio));
     case Method::kSmartLaplace:
       return record(RunSmartLaplace(context));
     case Method::kGetme:
-    case Method::kWarpage:
-      if (auto s = record(RunSimultaneous(context)); !s.ok()) return s;
+    case Method::kWarpage: {
+      // With the polish to follow, the simultaneous substep only has to bring q_mean near its
+      // plateau: the polish climbs the rest faster (simultaneous_smoother.h).
+      const bool polish = method == Method::kGetme && context.params.polish;
+      if (auto s = record(RunSimultaneous(
+              context, polish ? SimultaneousStop::kHandOnToPolish : SimultaneousStop::kSettled));
+          !s.ok()) {
+        return s;
+      }
       if (auto s = record(RunSequential(context, SelectionCriterion::kMeanRatio)); !s.ok()) {
         return s;
       }
       if (method == Method::kWarpage) {
         return record(RunSequential(context, SelectionCriterion::kQualityGamma));
       }
-      // Issue 14, item 1: raise q_mean towards the global optimiser's after GETMe, without
-      // lowering q_min (polish.h). Off by default until the wire and the CLI carry the switch.
-      if (context.params.polish) {
-        absl::StatusOr<PolishSummary> polish = RunPolish(context);
-        if (!polish.ok()) return polish.status();
-        result.iterations_polish = polish->sweeps;
-      }
+      // Issue 14, item 1: raise q_mean to the global optimiser's level after GETMe, without
+      // lowering q_min (polish.h).
+      if (polish) return record(RunPolish(context));
       return absl::OkStatus();
+    }
     case Method::kLaplace:
       break;
   }

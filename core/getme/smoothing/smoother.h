@@ -28,8 +28,7 @@ struct SmoothingResult {
   std::int64_t iterations_simultaneous = 0;
   std::int64_t iterations_sequential = 0;  // includes the q_γ sequential substep
   std::int64_t iterations_laplace = 0;
-  // Sweeps of the polish stage (SmoothingParams::polish; not a Phase, so not in `phases`).
-  std::int64_t iterations_polish = 0;
+  std::int64_t iterations_polish = 0;  // sweeps over the free nodes (SmoothingParams::polish)
   double seconds = 0.0;
   int threads = 1;
 };

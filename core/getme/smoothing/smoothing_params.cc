@@ -98,7 +98,9 @@ absl::Status SmoothingParams::Validate() const {
         {"penalty_success", penalty_success},
         {"laplace_tolerance", laplace_tolerance},
         {"sequential_improvement_tolerance", sequential_improvement_tolerance},
-        {"polish_tolerance", polish_tolerance}}) {
+        {"polish_tolerance", polish_tolerance},
+        {"polish_node_tolerance", polish_node_tolerance},
+        {"simultaneous_handoff_gain", simultaneous_handoff_gain}}) {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
@@ -108,7 +110,8 @@ absl::Status SmoothingParams::Validate() const {
                                     {"sequential_stall_iterations", sequential_stall_iterations},
                                     {"laplace_max_iterations", laplace_max_iterations},
                                     {"untangle_max_iterations", untangle_max_iterations},
-                                    {"polish_max_sweeps", polish_max_sweeps}}) {
+                                    {"polish_max_sweeps", polish_max_sweeps},
+                                    {"simultaneous_handoff_window", simultaneous_handoff_window}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {

@@ -39,6 +39,12 @@ struct SmoothingParams {
   // Stop when q_mean of two consecutive iterations differs by less than this (Sec. 4).
   double simultaneous_tolerance = 1e-6;
   std::int64_t simultaneous_max_iterations = 1000;
+  // Beyond the paper, only when the polish follows (SimultaneousStop::kHandOnToPolish): hand on
+  // once q_mean rose by less than simultaneous_handoff_gain per iteration, averaged over the last
+  // simultaneous_handoff_window iterations (0: never; the paper's rule alone). Measured in
+  // docs/quality.md: on cub_wedge_like it stops after 16 of 144 iterations.
+  std::int64_t simultaneous_handoff_window = 5;
+  double simultaneous_handoff_gain = 1e-4;
   // Safeguard (docs/thin-layers.md): before reverting a node of an invalid element to its old
   // position (Step 3.2), try moving it back only part of the way, halving its step up to this
   // many times. 0 gives the paper's literal Step 3.
@@ -88,14 +94,16 @@ struct SmoothingParams {
   // independent sets of a node colouring so any thread count gives the same bits
   // (core/getme/smoothing/polish.h). A step is kept only if it lowers the node's cost, inverts
   // nothing and does not lower the smallest mean ratio of the node's elements: q_min never falls.
-  bool polish = false;
-  // Stop when a sweep over all free nodes lowers the mesh's mean cost (mean over elements of the
-  // inverse mean ratio cost) by less than this fraction of it...
+  bool polish = true;
+  // Stop when the q_mean still to gain, extrapolated from the gains of the last two sweeps over
+  // all free nodes (they shrink about geometrically), is below this; or when a sweep gains no
+  // q_mean at all...
   double polish_tolerance = 1e-4;
-  // ...or after this many sweeps. On the shared meshes tet meshes stop on the tolerance after 2-8
-  // sweeps; cub_fru (11k hexes) runs to the cap, at ~0.07 s per sweep on 2 threads, with q_mean
-  // 0.4400 after 10 sweeps, 0.4401 after 20, 0.4404 after 50 (0.4366 without polish).
-  std::int64_t polish_max_sweeps = 20;
+  // ...or after this many sweeps: a bound on the time, not the rule that normally stops it.
+  std::int64_t polish_max_sweeps = 200;
+  // A node whose Newton step would lower its cost by less than this fraction of it counts as
+  // converged and stays (and a node is tried again only once something around it moved).
+  double polish_node_tolerance = 1e-6;
   // Halvings of a rejected Newton (or gradient) step before the node stays where it is.
   int polish_backtracking_steps = 10;
 
@@ -105,13 +113,15 @@ struct SmoothingParams {
 
   absl::Status Validate() const;
 
-  // Switches off every safeguard that goes beyond the paper (simultaneous and sequential
-  // backtracking, transforming blocking neighbours), for comparison with the literal algorithm
-  // of Sections 3.1–3.2. Untangling and the stop rules are unaffected.
+  // Switches off everything that goes beyond the paper's Sections 3.1–3.3 (simultaneous and
+  // sequential backtracking, transforming blocking neighbours, the polish and with it the
+  // simultaneous hand-on rule), for comparison with the literal algorithm. Untangling and the
+  // sequential stop rule are unaffected.
   void UseLiteralPaperAlgorithm() {
     simultaneous_backtracking_steps = 0;
     sequential_backtracking_steps = 0;
     sequential_transform_blockers = false;
+    polish = false;
   }
 };
 
