@@ -50,7 +50,7 @@ UntangleRun UntangleOnly(Mesh& mesh, int threads) {
 class RandomlyTangledTest : public ::testing::TestWithParam<std::uint64_t> {};
 
 TEST_P(RandomlyTangledTest, UntanglesWithTheBoundaryFixed) {
-  absl::StatusOr<Mesh> mesh = TangledHybridBlock(6, 0.45, GetParam());
+  absl::StatusOr<Mesh> mesh = TangledHybridBlock(6, 0.7, GetParam());
   ASSERT_TRUE(mesh.ok()) << mesh.status();
   const std::int64_t invalid_before = testing::CountInvalid(*mesh);
   // Not vacuous: the displacement inverts a good share of the elements.
@@ -72,7 +72,7 @@ TEST_P(RandomlyTangledTest, UntanglesWithTheBoundaryFixed) {
   }
 
   // The whole default run from the tangled input: untangling, then GETMe, then the result check.
-  absl::StatusOr<Mesh> again = TangledHybridBlock(6, 0.45, GetParam());
+  absl::StatusOr<Mesh> again = TangledHybridBlock(6, 0.7, GetParam());
   ASSERT_TRUE(again.ok());
   auto result = Smooth(*again, SmoothingParams{});
   ASSERT_TRUE(result.ok()) << result.status();
