@@ -211,13 +211,16 @@ TEST(CliPathological, ZeroVolumeElementsAreUntangled) {
 }
 
 // A tetrahedron whose four nodes are one point, beside a valid block: it is invalid and, all its
-// nodes on its own boundary, cannot be untangled; the error names it.
+// nodes on its own boundary, cannot be untangled; the error proves it, naming the element and
+// its pinned corner.
 TEST(CliPathological, CollapsedElementThatCannotBeUntangled) {
   TestMesh mesh = TetBlock(1);
   const std::int64_t first = static_cast<std::int64_t>(mesh.points.size());
   for (int k = 0; k < 4; ++k) mesh.points.push_back({5.0, 5.0, 5.0});
   mesh.cells.push_back({kTetra, {first, first + 1, first + 2, first + 3}});
-  ExpectRefused(mesh, "collapsed", {"could not untangle 1 invalid element", "6 (tetrahedron)"});
+  ExpectRefused(mesh, "collapsed",
+                {"cannot untangle: 1 invalid element has a corner with det <= 0",
+                 "element 6 (tetrahedron), corner of node 8: det 0"});
 }
 
 // Three tetrahedra on one triangle (two above it, overlapping, one below): no volume mesh has a

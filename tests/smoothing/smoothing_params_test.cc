@@ -58,7 +58,8 @@ TEST(SmoothingParamsDefaults, MethodWarpageLaplaceAndNodes) {
   EXPECT_EQ(params.method, Method::kGetme);  // GETMe = simultaneous, then sequential
   EXPECT_EQ(params.gamma, 0.25);             // Sec. 4.4
   EXPECT_EQ(params.laplace_tolerance, 1e-6);
-  EXPECT_TRUE(params.fix_boundary);  // Sec. 3: boundary nodes stay fixed
+  EXPECT_TRUE(params.fix_boundary);             // Sec. 3: boundary nodes stay fixed
+  EXPECT_FALSE(params.untangle_free_boundary);  // the boundary stays fixed while untangling too
   EXPECT_GE(params.sequential_cycle, 1);
   EXPECT_EQ(params.threads, 0);
 }
@@ -134,6 +135,8 @@ INSTANTIATE_TEST_SUITE_P(
             "sequential_stall_iterations"),
         BAD(NegativeLaplaceIterations, p.laplace_max_iterations = -1, "laplace_max_iterations"),
         BAD(NegativeUntangleIterations, p.untangle_max_iterations = -1, "untangle_max_iterations"),
+        BAD(FreeBoundaryWithoutUntangling, (p.untangle = false, p.untangle_free_boundary = true),
+            "untangle_free_boundary"),
         BAD(ZeroSequentialCycle, p.sequential_cycle = 0, "sequential_cycle"),
         BAD(NegativeSequentialCycle, p.sequential_cycle = -1000, "sequential_cycle"),
         BAD(SimultaneousBacktrackingAbove30, p.simultaneous_backtracking_steps = 31,

@@ -116,7 +116,13 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
   result.threads = pool.thread_count();
   result.before = EvaluateMeshQuality(mesh, pool);
   SmoothingContext context(mesh, params, pool, progress, cancel);
-  const ResultCheck check(mesh, context.movable);
+  // Untangling with untangle_free_boundary may move boundary nodes of invalid elements: the check
+  // must expect exactly those to move, and no other immovable node.
+  const bool untangles =
+      params.method != Method::kLaplace && params.untangle && result.before.invalid > 0;
+  const ResultCheck check(
+      mesh, untangles ? UntangleMovable(mesh, params, context.movable, context.quality)
+                      : context.movable);
   if (auto status = RunPhases(context, result); !status.ok()) return status;
   result.after = EvaluateMeshQuality(mesh, pool);
   result.seconds = context.ElapsedSeconds();

@@ -128,6 +128,11 @@ absl::Status SmoothingParams::Validate() const {
     return OutOfRange("polish_backtracking_steps", polish_backtracking_steps, "in [0, 30]");
   }
   if (threads < 0 || threads > 1024) return OutOfRange("threads", threads, "in [0, 1024]");
+  if (untangle_free_boundary && !untangle) {
+    // Asking to free the boundary for a phase that does not run is a caller mistake, not a no-op.
+    return absl::InvalidArgumentError(
+        "untangle_free_boundary = true requires untangle = true (it only affects untangling)");
+  }
   return absl::OkStatus();
 }
 

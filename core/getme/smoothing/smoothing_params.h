@@ -85,7 +85,16 @@ struct SmoothingParams {
 
   // --- Untangling (goes beyond the paper, which requires a valid input; docs/untangling.md) ---
   bool untangle = true;
+  // Sweeps of the node-local Newton untangler over the free nodes (untangle.h); it stops earlier
+  // when no element is invalid or a sweep makes no progress.
   std::int64_t untangle_max_iterations = 200;
+  // With fix_boundary, a boundary node never moves, so an inverted corner whose node tetrahedron
+  // lies on the boundary cannot be repaired (the untangler then fails with a proof). This lets the
+  // untangler move the boundary nodes of the elements that are invalid when it starts; nodes the
+  // input marked fixed still never move, and the smoothing after untangling keeps the boundary
+  // fixed again. Off by default: it changes the boundary, which the paper (Sec. 3) keeps.
+  // Requires untangle.
+  bool untangle_free_boundary = false;
 
   // --- Polish (goes beyond the paper; issue 14, item 1) ---
   // GETMe's fixed point is not the optimum of q_mean (the paper's tables put it ~0.01 below
