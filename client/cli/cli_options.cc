@@ -42,6 +42,9 @@ Options:
   --free-boundary      let boundary nodes move too
   --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
   --no-untangle        refuse a mesh with invalid elements instead of untangling it
+  --untangle-boundary  while untangling, let the boundary nodes of invalid elements move
+                       (nodes marked fixed never do): for an inverted corner whose nodes are
+                       all on the boundary (docs/untangling.md)
   --no-polish          end --method getme after the sequential substep: no polish stage,
                        which otherwise raises q_mean to the global optimiser's level
                        without lowering q_min (docs/quality.md#polish)
@@ -282,6 +285,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--literal", {false, SetTrue(options.smoothing.literal)}},
       {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
       {"--no-polish", {false, SetTrue(options.smoothing.no_polish)}},
+      {"--untangle-boundary", {false, SetTrue(options.smoothing.untangle_boundary)}},
       {"--fix-physical",
        {true,
         [&](const std::string& value) {

@@ -10,6 +10,7 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
   params.untangle = !flags.no_untangle;
   if (flags.literal) params.UseLiteralPaperAlgorithm();
   if (flags.no_polish) params.polish = false;
+  params.untangle_free_boundary = flags.untangle_boundary;
   if (flags.max_iterations) {
     params.untangle_max_iterations = *flags.max_iterations;
     params.simultaneous_max_iterations = *flags.max_iterations;

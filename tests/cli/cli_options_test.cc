@@ -25,6 +25,23 @@ TEST(CliOptions, LiteralSwitchesOffEverySafeguard) {
   EXPECT_TRUE(default_params.polish);
 }
 
+TEST(CliOptions, UntangleBoundaryFreesBoundaryNodesForUntanglingOnly) {
+  auto options = ParseSmoothArguments({"in.vtk", "out.vtk", "--untangle-boundary"});
+  ASSERT_TRUE(options.ok()) << options.status();
+  const SmoothingParams params = ToSmoothingParams(*options);
+  EXPECT_TRUE(params.untangle_free_boundary);
+  EXPECT_TRUE(params.fix_boundary);  // the smoothing after untangling keeps the boundary
+  EXPECT_TRUE(params.Validate().ok());
+  auto defaults = ParseSmoothArguments({"in.vtk", "out.vtk"});
+  ASSERT_TRUE(defaults.ok());
+  EXPECT_FALSE(ToSmoothingParams(*defaults).untangle_free_boundary);
+  // Without untangling there is nothing to free the boundary for: the engine names the clash.
+  options = ParseSmoothArguments({"in.vtk", "out.vtk", "--untangle-boundary", "--no-untangle"});
+  ASSERT_TRUE(options.ok()) << options.status();
+  EXPECT_NE(ToSmoothingParams(*options).Validate().message().find("untangle_free_boundary"),
+            std::string::npos);
+}
+
 TEST(CliOptions, NoPolishAndMaxIterationsReachThePolish) {
   auto options = ParseSmoothArguments({"in.vtk", "out.vtk", "--no-polish"});
   ASSERT_TRUE(options.ok()) << options.status();

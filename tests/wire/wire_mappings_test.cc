@@ -73,7 +73,7 @@ TEST(ToWireParameters, ChangedFieldsAreSent) {
   EXPECT_FALSE(wire.has_polish_max_sweeps());
 }
 
-TEST(ToEngineParams, PolishFieldsRoundTrip) {
+TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   SmoothingParams params;
   params.polish_tolerance = 3e-5;
   params.polish_max_sweeps = 17;
@@ -93,6 +93,13 @@ TEST(ToEngineParams, PolishFieldsRoundTrip) {
   EXPECT_EQ(back->polish_backtracking_steps, 6);
   EXPECT_EQ(back->simultaneous_handoff_window, 9);
   EXPECT_EQ(back->simultaneous_handoff_gain, 5e-5);
+
+  params = SmoothingParams();
+  params.untangle_free_boundary = true;
+  ASSERT_TRUE(ToWireParameters(params).has_untangle_free_boundary());
+  back = ToEngineParams(ToWireParameters(params), 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_TRUE(back->untangle_free_boundary);
 
   v1::SmoothingParameters off;
   off.set_polish(false);

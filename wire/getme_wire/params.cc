@@ -104,6 +104,9 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
     params.untangle_max_iterations = wire.untangle_max_iterations();
   }
   if (wire.has_free_boundary()) params.fix_boundary = !wire.free_boundary();
+  if (wire.has_untangle_free_boundary()) {
+    params.untangle_free_boundary = wire.untangle_free_boundary();
+  }
   if (wire.has_polish()) params.polish = wire.polish();
   if (wire.has_polish_tolerance()) params.polish_tolerance = wire.polish_tolerance();
   if (wire.has_polish_max_sweeps()) params.polish_max_sweeps = wire.polish_max_sweeps();
@@ -172,6 +175,7 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.untangle_max_iterations, defaults.untangle_max_iterations, [&](std::int64_t v) { wire.set_untangle_max_iterations(v); });
   SetIfChanged(params.fix_boundary, defaults.fix_boundary, [&](bool v) { wire.set_free_boundary(!v); });
   SetIfChanged(params.threads, defaults.threads, [&](int v) { wire.set_threads(v); });
+  SetIfChanged(params.untangle_free_boundary, defaults.untangle_free_boundary, [&](bool v) { wire.set_untangle_free_boundary(v); });
   SetIfChanged(params.polish, defaults.polish, [&](bool v) { wire.set_polish(v); });
   SetIfChanged(params.polish_tolerance, defaults.polish_tolerance, [&](double v) { wire.set_polish_tolerance(v); });
   SetIfChanged(params.polish_max_sweeps, defaults.polish_max_sweeps, [&](std::int64_t v) { wire.set_polish_max_sweeps(v); });
