@@ -29,6 +29,8 @@ const char* KindName(getme::meshgen::MeshKind kind) {
       return "plate";
     case getme::meshgen::MeshKind::kRing:
       return "ring";
+    case getme::meshgen::MeshKind::kArtery:
+      return "artery";
     case getme::meshgen::MeshKind::kVessel:
       break;
   }
