@@ -339,6 +339,34 @@ TEST(ArteryVariantsTest, EveryVariantIsValidWithOneCapPerOpening) {
   }
 }
 
+// Layers thicker than the tetrahedra can give way to (here ~1.4 wall edges inward) are thinned
+// stack by stack; a thinned stack keeps its growth ratio, and every element stays valid.
+TEST(ArteryThinningTest, TooThickLayersAreThinnedLocallyAndStayValid) {
+  ArteryOptions options;
+  options.mesh_size = 0.6;
+  options.inward_layers = 10;
+  options.outward_layers = 1;
+  options.growth_ratio = 1.4;
+  options.first_layer_ratio = 0.02;
+  absl::StatusOr<ArteryMesh> artery = GenerateArtery(options);
+  ASSERT_TRUE(artery.ok()) << artery.status();
+  EXPECT_GT(artery->layers.thinned_inward, 0);
+  EXPECT_LT(artery->layers.min_inward_scale, 1.0);
+  const Mesh& mesh = artery->mesh;
+  EXPECT_TRUE(InvalidElements(mesh).empty());
+  for (const auto& stack : PrismStacks(mesh)) {
+    ASSERT_EQ(stack.size(), 11u);
+    for (int k = 0; k < 3; ++k) {
+      for (int l = 0; l + 1 < options.inward_layers; ++l) {
+        ASSERT_NEAR(VerticalEdge(mesh, stack[l], k) / VerticalEdge(mesh, stack[l + 1], k), 1.4,
+                    1e-6);
+      }
+      ASSERT_LE(VerticalEdge(mesh, stack[options.inward_layers - 1], k),
+                artery->first_layer_height * (1.0 + 1e-9));
+    }
+  }
+}
+
 TEST(ArteryOptionsTest, RejectsBadOptions) {
   ArteryOptions options;
   options.branches = 4;

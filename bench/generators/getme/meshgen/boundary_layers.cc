@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "absl/container/flat_hash_map.h"
+#include "absl/container/flat_hash_set.h"
 #include "absl/strings/str_cat.h"
 #include "getme/elements/element_quality.h"
 
@@ -212,9 +213,11 @@ absl::StatusOr<BoundaryLayerReport> GrowBoundaryLayers(
     // Check the moved tetrahedra and the prisms to be built; thin the stacks at invalid ones.
     std::vector<char> thin_inward(count, 0), thin_outward(count, 0);
     bool any_invalid = false;
+    std::int64_t invalid_tets = 0, invalid_inward = 0, invalid_outward = 0;
     for (ElementId e = 0; e < tets; ++e) {
       if (draft.IsElementValid(e)) continue;
       any_invalid = true;
+      ++invalid_tets;
       bool marked = false;
       for (const NodeId node : draft.element_nodes(e)) {
         if (on_wall[node]) {
@@ -223,12 +226,24 @@ absl::StatusOr<BoundaryLayerReport> GrowBoundaryLayers(
         }
       }
       if (marked) continue;
-      // No wall node: the push reached it through its neighbours; thin those around it.
-      for (const NodeId node : draft.element_nodes(e)) {
-        for (std::int64_t i = adjacency.offsets[node]; i < adjacency.offsets[node + 1]; ++i) {
-          const NodeId neighbour = adjacency.neighbours[i];
-          if (on_wall[neighbour]) thin_inward[vertex_index.at(neighbour)] = 1;
+      // No wall node: the push reached it through its neighbours, from wall nodes at most
+      // displacement_iterations edges away; thin all of those.
+      std::vector<NodeId> front(draft.element_nodes(e).begin(), draft.element_nodes(e).end());
+      absl::flat_hash_set<NodeId> seen(front.begin(), front.end());
+      for (int hop = 0; hop < options.displacement_iterations && !front.empty(); ++hop) {
+        std::vector<NodeId> next_front;
+        for (const NodeId node : front) {
+          for (std::int64_t i = adjacency.offsets[node]; i < adjacency.offsets[node + 1]; ++i) {
+            const NodeId neighbour = adjacency.neighbours[i];
+            if (!seen.insert(neighbour).second) continue;
+            if (on_wall[neighbour]) {
+              thin_inward[vertex_index.at(neighbour)] = 1;
+            } else {
+              next_front.push_back(neighbour);
+            }
+          }
         }
+        front = std::move(next_front);
       }
     }
     for (const auto& triangle : wall) {
@@ -241,6 +256,7 @@ absl::StatusOr<BoundaryLayerReport> GrowBoundaryLayers(
             inward_node(v[0], j + 1), inward_node(v[1], j + 1), inward_node(v[2], j + 1)};
         if (!IsValid<ElementType::kPrism>(prism)) {
           any_invalid = true;
+          ++invalid_inward;
           for (const std::size_t w : v) thin_inward[w] = 1;
         }
       }
@@ -250,6 +266,7 @@ absl::StatusOr<BoundaryLayerReport> GrowBoundaryLayers(
             outward_node(v[0], k + 1), outward_node(v[1], k + 1), outward_node(v[2], k + 1)};
         if (!IsValid<ElementType::kPrism>(prism)) {
           any_invalid = true;
+          ++invalid_outward;
           for (const std::size_t w : v) thin_outward[w] = 1;
         }
       }
@@ -261,7 +278,9 @@ absl::StatusOr<BoundaryLayerReport> GrowBoundaryLayers(
     if (round + 1 >= options.max_shrink_rounds) {
       return absl::InternalError(absl::StrCat(
           "GrowBoundaryLayers: elements still invalid after ", options.max_shrink_rounds,
-          " rounds of thinning the layers (the wall is too curved for the layer thickness)"));
+          " rounds of thinning the layers (", invalid_tets, " tetrahedra, ", invalid_inward,
+          " inward and ", invalid_outward,
+          " outward prisms): the layers are too thick for the wall's curvature or mesh"));
     }
     for (std::size_t v = 0; v < count; ++v) {
       if (thin_inward[v]) inward_scale[v] *= 0.5;

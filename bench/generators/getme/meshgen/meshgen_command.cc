@@ -1,5 +1,6 @@
 #include "getme/meshgen/meshgen_command.h"
 
+#include <utility>
 #include <vector>
 
 #include "absl/strings/numbers.h"
@@ -174,7 +175,7 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
   return command;
 }
 
-absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
+absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command, std::string* note) {
   const double block_distortion = command.distortion.value_or(kBlockDistortion);
   switch (command.kind) {
     case MeshKind::kHexBlock:
@@ -187,8 +188,19 @@ absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
       return ThinPrismVessel(command.elements.has_value()
                                  ? VesselOptionsForElements(*command.elements, command.vessel)
                                  : command.vessel);
-    case MeshKind::kArtery:
-      return Artery(command.artery);
+    case MeshKind::kArtery: {
+      absl::StatusOr<ArteryMesh> artery = GenerateArtery(command.artery);
+      if (!artery.ok()) return artery.status();
+      if (note != nullptr) {
+        const BoundaryLayerReport& layers = artery->layers;
+        *note = absl::StrCat(
+            "first layer height ", artery->first_layer_height, " (",
+            command.artery.first_layer_ratio, " x mean wall edge ", artery->mean_wall_edge, "), ",
+            artery->caps.size(), " openings; stacks thinned: ", layers.thinned_inward, " inward, ",
+            layers.thinned_outward, " outward of ", layers.wall_vertices, " wall nodes");
+      }
+      return std::move(artery->mesh);
+    }
     case MeshKind::kPlate:
       return PlateWithHoles(SizedOptions<PlateWithHolesOptions>(command));
     case MeshKind::kRing:

@@ -87,7 +87,8 @@ inline constexpr char kMeshgenUsage[] =
 // Parses the arguments after the program name. InvalidArgument names the offending argument.
 absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> args);
 
-// Runs the generator the command asks for.
-absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command);
+// Runs the generator the command asks for. When `note` is given, generators with something to
+// report beyond the mesh (artery: first layer height, thinned stacks) write one line into it.
+absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command, std::string* note = nullptr);
 
 }  // namespace getme::meshgen
