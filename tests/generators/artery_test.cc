@@ -291,24 +291,21 @@ TEST(ArteryDeterminismTest, SameOptionsGiveBitIdenticalMeshes) {
     ASSERT_EQ(a->type(e), b->type(e));
     ASSERT_TRUE(std::ranges::equal(a->element_nodes(e), b->element_nodes(e))) << e;
   }
-  options.seed = 2;
-  absl::StatusOr<Mesh> c = Artery(options);
-  ASSERT_TRUE(c.ok());
-  EXPECT_FALSE(c->node_count() == a->node_count() && std::ranges::equal(a->x(), c->x()))
-      << "another seed, another mesh";
 }
 
 // Other shapes the options reach: no, one and three branches, a straight centre line, inward
-// layers only (the usual CFD mesh), a steeper growth and thinner first layer.
+// layers only (the usual CFD mesh), a steeper growth and thinner first layer, sharp junctions.
 TEST(ArteryVariantsTest, EveryVariantIsValidWithOneCapPerOpening) {
   struct Variant {
     int branches;
     double helix_radius;
     int inward, outward;
-    double first, growth;
+    double first, growth, fillet;
   };
-  for (const Variant& v : {Variant{0, 2.0, 6, 2, 0.005, 1.2}, Variant{1, 2.0, 4, 0, 0.005, 1.2},
-                           Variant{3, 2.0, 8, 1, 0.002, 1.3}, Variant{2, 0.0, 6, 2, 0.005, 1.2}}) {
+  for (const Variant& v :
+       {Variant{0, 2.0, 6, 2, 0.005, 1.2, 0.25}, Variant{1, 2.0, 4, 0, 0.005, 1.2, 0.25},
+        Variant{3, 2.0, 8, 1, 0.002, 1.3, 0.25}, Variant{2, 0.0, 6, 2, 0.005, 1.2, 0.25},
+        Variant{2, 2.0, 6, 2, 0.005, 1.2, 0.0}, Variant{3, 2.0, 6, 0, 0.005, 1.2, 0.0}}) {
     ArteryOptions options;
     options.mesh_size = 0.6;
     options.branches = v.branches;
@@ -317,6 +314,7 @@ TEST(ArteryVariantsTest, EveryVariantIsValidWithOneCapPerOpening) {
     options.outward_layers = v.outward;
     options.first_layer_ratio = v.first;
     options.growth_ratio = v.growth;
+    options.junction_fillet = v.fillet;
     absl::StatusOr<ArteryMesh> artery = GenerateArtery(options);
     ASSERT_TRUE(artery.ok()) << artery.status();
     const Mesh& mesh = artery->mesh;

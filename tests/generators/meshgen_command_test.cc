@@ -78,7 +78,9 @@ TEST(MeshgenCommandTest, ArteryOptionsArePassedOn) {
                                                   "--length",
                                                   "9",
                                                   "--seed",
-                                                  "4"});
+                                                  "4",
+                                                  "--junction-fillet",
+                                                  "0"});
   ASSERT_TRUE(command.ok()) << command.status();
   EXPECT_EQ(command->kind, MeshKind::kArtery);
   const ArteryOptions& a = command->artery;
@@ -97,6 +99,7 @@ TEST(MeshgenCommandTest, ArteryOptionsArePassedOn) {
   EXPECT_EQ(a.radius, 1.5);
   EXPECT_EQ(a.length, 9.0);
   EXPECT_EQ(a.seed, 4u);
+  EXPECT_EQ(a.junction_fillet, 0.0);
   // Unset options keep the artery's own defaults, not the vessel's.
   absl::StatusOr<MeshgenCommand> plain = Parse({"artery", "a.vtk"});
   ASSERT_TRUE(plain.ok());

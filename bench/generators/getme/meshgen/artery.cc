@@ -136,6 +136,9 @@ absl::Status ValidateOptions(const ArteryOptions& o) {
   if (!(o.branch_radius_ratio > 0.0 && o.branch_radius_ratio < 0.8)) {
     return absl::InvalidArgumentError("Artery: branch_radius_ratio must be in (0, 0.8)");
   }
+  if (!(o.junction_fillet >= 0.0 && o.junction_fillet < 1.0)) {
+    return absl::InvalidArgumentError("Artery: junction_fillet must be in [0, 1)");
+  }
   if (o.inward_layers < 0 || o.outward_layers < 0) {
     return absl::InvalidArgumentError("Artery: layer counts must be >= 0");
   }
@@ -195,6 +198,35 @@ void GenerateWithGmsh(const ArteryOptions& o, const std::vector<CapPlane>& caps,
     gmsh::model::occ::fuse(main_volume, branch_volumes, fused, map);
   }
   gmsh::model::occ::synchronize();
+  if (o.junction_fillet > 0.0 && !branch_volumes.empty()) {
+    // The junction curves are the curves between two different wall surfaces (a cap's rim
+    // borders a cap, the loft's seam borders its own surface twice).
+    gmsh::vectorpair volumes;
+    gmsh::model::getEntities(volumes, 3);
+    std::vector<int> volume_tags, junction;
+    for (const auto& [dim, tag] : volumes) volume_tags.push_back(tag);
+    gmsh::vectorpair curves;
+    gmsh::model::getEntities(curves, 1);
+    for (const auto& [dim, tag] : curves) {
+      std::vector<int> up, down;
+      gmsh::model::getAdjacencies(dim, tag, up, down);
+      std::sort(up.begin(), up.end());
+      up.erase(std::unique(up.begin(), up.end()), up.end());
+      if (up.size() != 2) continue;
+      const bool on_cap = std::any_of(up.begin(), up.end(), [&](int surface) {
+        double x, y, z;
+        gmsh::model::occ::getCenterOfMass(2, surface, x, y, z);
+        return std::any_of(caps.begin(), caps.end(), [&](const CapPlane& cap) {
+          return (Vec3(x, y, z) - cap.centre).norm() < 1e-3 * o.radius;
+        });
+      });
+      if (!on_cap) junction.push_back(tag);
+    }
+    gmsh::vectorpair filleted;
+    gmsh::model::occ::fillet(volume_tags, junction, {o.junction_fillet * o.radius}, filleted,
+                             /*removeVolume=*/true);
+    gmsh::model::occ::synchronize();
+  }
 
   // Caps: the planar surfaces whose centre of mass is a cap centre; everything else is wall.
   gmsh::vectorpair surfaces;

@@ -34,6 +34,9 @@ struct ArteryOptions {
   int branches = 2;
   double branch_radius_ratio = 0.55;
   double branch_length = 3.0;
+  // Radius of the fillet OpenCASCADE rounds the junction curves with, as a fraction of `radius`;
+  // 0 leaves the junctions a sharp crease (the harder case for the layers and the smoother).
+  double junction_fillet = 0.25;
   // Target tetrahedron edge length handed to gmsh (Mesh.MeshSizeMin/Max).
   double mesh_size = 0.3;
   int inward_layers = 6;

@@ -142,6 +142,8 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
       status = ParseNumber(arg, value, command.artery.branch_radius_ratio);
     } else if (arg == "--branch-length") {
       status = ParseNumber(arg, value, command.artery.branch_length);
+    } else if (arg == "--junction-fillet") {
+      status = ParseNumber(arg, value, command.artery.junction_fillet);
     } else if (arg == "--first-layer-ratio") {
       status = ParseNumber(arg, value, command.artery.first_layer_ratio);
     } else if (arg == "--growth-ratio") {
