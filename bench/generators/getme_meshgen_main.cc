@@ -29,6 +29,8 @@ const char* KindName(getme::meshgen::MeshKind kind) {
       return "plate";
     case getme::meshgen::MeshKind::kRing:
       return "ring";
+    case getme::meshgen::MeshKind::kArtery:
+      return "artery";
     case getme::meshgen::MeshKind::kVessel:
       break;
   }
@@ -48,7 +50,8 @@ int Run(std::span<const std::string> args) {
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
-  absl::StatusOr<Mesh> mesh = meshgen::GenerateMesh(*command);
+  std::string note;
+  absl::StatusOr<Mesh> mesh = meshgen::GenerateMesh(*command, &note);
   const double generate_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!mesh.ok()) {
@@ -82,6 +85,7 @@ int Run(std::span<const std::string> args) {
   }
   absl::PrintF("  %-12s %8d  q_min %.4f  q_mean %.4f  invalid %d\n", "all", quality.elements,
                quality.q_min, quality.q_mean, quality.invalid);
+  if (!note.empty()) absl::PrintF("  %s\n", note);
   return quality.invalid == 0 ? 0 : 1;
 }
 

@@ -46,6 +46,68 @@ TEST(MeshgenCommandTest, SingleSizeAppliesToAllAxesAndVesselOptionsArePassedOn) 
   EXPECT_TRUE(command->binary);
 }
 
+TEST(MeshgenCommandTest, ArteryOptionsArePassedOn) {
+  absl::StatusOr<MeshgenCommand> command = Parse({"artery",
+                                                  "a.vtk",
+                                                  "--mesh-size",
+                                                  "0.5",
+                                                  "--layers",
+                                                  "8",
+                                                  "--outer-layers",
+                                                  "0",
+                                                  "--first-layer-ratio",
+                                                  "0.002",
+                                                  "--growth-ratio",
+                                                  "1.3",
+                                                  "--branches",
+                                                  "3",
+                                                  "--helix-radius",
+                                                  "1.5",
+                                                  "--turn-angle",
+                                                  "2",
+                                                  "--taper",
+                                                  "0.2",
+                                                  "--stenosis",
+                                                  "0.4",
+                                                  "--branch-radius-ratio",
+                                                  "0.5",
+                                                  "--branch-length",
+                                                  "2.5",
+                                                  "--radius",
+                                                  "1.5",
+                                                  "--length",
+                                                  "9",
+                                                  "--seed",
+                                                  "4",
+                                                  "--junction-fillet",
+                                                  "0"});
+  ASSERT_TRUE(command.ok()) << command.status();
+  EXPECT_EQ(command->kind, MeshKind::kArtery);
+  const ArteryOptions& a = command->artery;
+  EXPECT_EQ(a.mesh_size, 0.5);
+  EXPECT_EQ(a.inward_layers, 8);
+  EXPECT_EQ(a.outward_layers, 0);
+  EXPECT_EQ(a.first_layer_ratio, 0.002);
+  EXPECT_EQ(a.growth_ratio, 1.3);
+  EXPECT_EQ(a.branches, 3);
+  EXPECT_EQ(a.helix_radius, 1.5);
+  EXPECT_EQ(a.turn_angle, 2.0);
+  EXPECT_EQ(a.taper, 0.2);
+  EXPECT_EQ(a.stenosis, 0.4);
+  EXPECT_EQ(a.branch_radius_ratio, 0.5);
+  EXPECT_EQ(a.branch_length, 2.5);
+  EXPECT_EQ(a.radius, 1.5);
+  EXPECT_EQ(a.length, 9.0);
+  EXPECT_EQ(a.seed, 4u);
+  EXPECT_EQ(a.junction_fillet, 0.0);
+  // Unset options keep the artery's own defaults, not the vessel's.
+  absl::StatusOr<MeshgenCommand> plain = Parse({"artery", "a.vtk"});
+  ASSERT_TRUE(plain.ok());
+  EXPECT_EQ(plain->artery.mesh_size, ArteryOptions{}.mesh_size);
+  EXPECT_EQ(plain->artery.inward_layers, ArteryOptions{}.inward_layers);
+  EXPECT_FALSE(Parse({"artery", "a.vtk", "--elements", "5000"}).ok());
+}
+
 TEST(MeshgenCommandTest, ErrorsNameTheOffendingArgument) {
   const auto message = [](std::vector<std::string> args) {
     return std::string(Parse(std::move(args)).status().message());

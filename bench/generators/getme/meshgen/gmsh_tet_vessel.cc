@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -42,13 +44,6 @@ class GmshSession {
   ~GmshSession() { gmsh::finalize(); }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
-};
-
-struct RawGmshMesh {
-  std::vector<std::size_t> node_tags;
-  std::vector<double> node_coords;
-  std::vector<std::size_t> tet_nodes;   // 4 tags per tetrahedron
-  std::vector<std::size_t> wall_nodes;  // 3 tags per lateral wall triangle
 };
 
 void GenerateWithGmsh(const ThinPrismVesselOptions& options, RawGmshMesh& raw) {
@@ -89,45 +84,16 @@ void GenerateWithGmsh(const ThinPrismVesselOptions& options, RawGmshMesh& raw) {
   }
   gmsh::model::mesh::generate(3);
 
-  std::vector<double> parametric;
-  gmsh::model::mesh::getNodes(raw.node_tags, raw.node_coords, parametric, -1, -1,
-                              /*includeBoundary=*/false, /*returnParametricCoord=*/false);
-  // Fresh output vectors for every call: gmsh 4.8 returned no triangles into a vector that still
-  // held the tetrahedra's tags (it takes non-empty vectors as preallocated storage).
-  std::vector<std::size_t> tet_tags;
-  gmsh::model::mesh::getElementsByType(kGmshTetrahedron, tet_tags, raw.tet_nodes);
   // The end caps are the planar surfaces; everything else (cylinder or torus) is the wall.
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
+  std::vector<int> wall;
   for (const auto& [dim, tag] : surfaces) {
     std::string type;
     gmsh::model::getType(dim, tag, type);
-    if (type == "Plane") continue;
-    std::vector<std::size_t> triangle_tags, triangle_nodes;
-    gmsh::model::mesh::getElementsByType(kGmshTriangle, triangle_tags, triangle_nodes, tag);
-    raw.wall_nodes.insert(raw.wall_nodes.end(), triangle_nodes.begin(), triangle_nodes.end());
+    if (type != "Plane") wall.push_back(tag);
   }
-}
-
-// Runs GenerateWithGmsh in its own gmsh session, one caller at a time.
-absl::Status RunGmsh(const ThinPrismVesselOptions& options, RawGmshMesh& raw) {
-  std::lock_guard<std::mutex> lock(GmshMutex());
-  try {
-    GmshSession session;
-    try {
-      GenerateWithGmsh(options, raw);
-    } catch (...) {
-      // gmsh's API throws without a message of its own; its logger keeps the last error, and
-      // must be read before the session finalises gmsh.
-      std::string error;
-      gmsh::logger::getLastError(error);
-      return absl::InternalError(absl::StrCat("ThinPrismVessel: gmsh failed to mesh the vessel: ",
-                                              error.empty() ? "no message" : error));
-    }
-  } catch (...) {
-    return absl::InternalError("ThinPrismVessel: gmsh failed to start or to shut down");
-  }
-  return absl::OkStatus();
+  ReadGmshMesh({wall}, raw);
 }
 
 std::array<NodeId, 3> SortedTriangle(NodeId a, NodeId b, NodeId c) {
@@ -138,19 +104,62 @@ std::array<NodeId, 3> SortedTriangle(NodeId a, NodeId b, NodeId c) {
 
 }  // namespace
 
+void ReadGmshMesh(const std::vector<std::vector<int>>& surface_groups, RawGmshMesh& raw) {
+  std::vector<double> parametric;
+  gmsh::model::mesh::getNodes(raw.node_tags, raw.node_coords, parametric, -1, -1,
+                              /*includeBoundary=*/false, /*returnParametricCoord=*/false);
+  // Fresh output vectors for every call: gmsh 4.8 returned no triangles into a vector that still
+  // held the tetrahedra's tags (it takes non-empty vectors as preallocated storage).
+  std::vector<std::size_t> tet_tags;
+  gmsh::model::mesh::getElementsByType(kGmshTetrahedron, tet_tags, raw.tet_nodes);
+  raw.surface_nodes.assign(surface_groups.size(), {});
+  for (std::size_t group = 0; group < surface_groups.size(); ++group) {
+    for (const int tag : surface_groups[group]) {
+      std::vector<std::size_t> triangle_tags, triangle_nodes;
+      gmsh::model::mesh::getElementsByType(kGmshTriangle, triangle_tags, triangle_nodes, tag);
+      raw.surface_nodes[group].insert(raw.surface_nodes[group].end(), triangle_nodes.begin(),
+                                      triangle_nodes.end());
+    }
+  }
+}
+
+absl::Status RunGmsh(const std::function<void(RawGmshMesh&)>& generate, RawGmshMesh& raw,
+                     const std::string& who) {
+  std::lock_guard<std::mutex> lock(GmshMutex());
+  try {
+    GmshSession session;
+    try {
+      generate(raw);
+    } catch (const std::exception& e) {
+      return absl::InternalError(absl::StrCat(who, ": ", e.what()));
+    } catch (...) {
+      // gmsh's API throws without a message of its own; its logger keeps the last error, and
+      // must be read before the session finalises gmsh.
+      std::string error;
+      gmsh::logger::getLastError(error);
+      return absl::InternalError(absl::StrCat(
+          who, ": gmsh failed to mesh the vessel: ", error.empty() ? "no message" : error));
+    }
+  } catch (...) {
+    return absl::InternalError(absl::StrCat(who, ": gmsh failed to start or to shut down"));
+  }
+  return absl::OkStatus();
+}
+
 double SegmentLength(const ThinPrismVesselOptions& options) {
   return options.length / std::max(1, options.segments);
 }
 
-absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, MeshDraft& draft) {
-  RawGmshMesh raw;
-  if (absl::Status status = RunGmsh(options, raw); !status.ok()) return status;
+absl::StatusOr<std::vector<std::vector<std::array<NodeId, 3>>>> ImportGmshTets(
+    const RawGmshMesh& raw, MeshDraft& draft, const std::string& who) {
   // Meshing failures that gmsh only logs (it does not throw unless General.AbortOnError) show up
   // as an empty mesh.
-  if (raw.tet_nodes.empty() || raw.wall_nodes.empty()) {
-    return absl::InternalError(absl::StrCat("ThinPrismVessel: gmsh produced ",
-                                            raw.tet_nodes.size() / 4, " tetrahedra and ",
-                                            raw.wall_nodes.size() / 3, " wall triangles"));
+  for (std::size_t group = 0; group < raw.surface_nodes.size(); ++group) {
+    if (raw.tet_nodes.empty() || raw.surface_nodes[group].empty()) {
+      return absl::InternalError(
+          absl::StrCat(who, ": gmsh produced ", raw.tet_nodes.size() / 4, " tetrahedra and ",
+                       raw.surface_nodes[group].size() / 3, " triangles in surface group ", group));
+    }
   }
 
   // Keep only nodes the tetrahedra use, in ascending tag order.
@@ -164,7 +173,7 @@ absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, M
     const auto it = coord_index.find(tag);
     if (it == coord_index.end()) {
       return absl::InternalError(
-          absl::StrCat("ThinPrismVessel: gmsh tetrahedron uses unknown node tag ", tag));
+          absl::StrCat(who, ": gmsh tetrahedron uses unknown node tag ", tag));
     }
     const double* p = &raw.node_coords[3 * it->second];
     node_of_tag[tag] = draft.AddNode(Vec3(p[0], p[1], p[2]));
@@ -183,7 +192,7 @@ absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, M
     if (det < 0.0) std::swap(tet[1], tet[2]);
     const ElementId element = draft.AddElement(ElementType::kTetrahedron, tet);
     if (!draft.IsElementValid(element)) {
-      return absl::InternalError(absl::StrCat("ThinPrismVessel: gmsh tetrahedron ", t / 4,
+      return absl::InternalError(absl::StrCat(who, ": gmsh tetrahedron ", t / 4,
                                               " is degenerate (volume ", det / 6.0, ")"));
     }
     for (const auto& f : kFaceAndOpposite) {
@@ -191,31 +200,49 @@ absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, M
     }
   }
 
-  TetVessel vessel;
-  vessel.wall_triangles.reserve(raw.wall_nodes.size() / 3);
-  for (std::size_t w = 0; w < raw.wall_nodes.size(); w += 3) {
-    std::array<NodeId, 3> triangle;
-    for (int k = 0; k < 3; ++k) {
-      const auto it = node_of_tag.find(raw.wall_nodes[w + k]);
-      if (it == node_of_tag.end()) {
-        return absl::InternalError(absl::StrCat("ThinPrismVessel: wall triangle ", w / 3,
-                                                " uses node tag ", raw.wall_nodes[w + k],
-                                                " that no tetrahedron uses"));
+  std::vector<std::vector<std::array<NodeId, 3>>> groups(raw.surface_nodes.size());
+  for (std::size_t group = 0; group < raw.surface_nodes.size(); ++group) {
+    const std::vector<std::size_t>& nodes = raw.surface_nodes[group];
+    groups[group].reserve(nodes.size() / 3);
+    for (std::size_t w = 0; w < nodes.size(); w += 3) {
+      std::array<NodeId, 3> triangle;
+      for (int k = 0; k < 3; ++k) {
+        const auto it = node_of_tag.find(nodes[w + k]);
+        if (it == node_of_tag.end()) {
+          return absl::InternalError(absl::StrCat(who, ": surface triangle ", w / 3,
+                                                  " uses node tag ", nodes[w + k],
+                                                  " that no tetrahedron uses"));
+        }
+        triangle[k] = it->second;
       }
-      triangle[k] = it->second;
+      const auto opposite =
+          opposite_of_face.find(SortedTriangle(triangle[0], triangle[1], triangle[2]));
+      if (opposite == opposite_of_face.end()) {
+        return absl::InternalError(
+            absl::StrCat(who, ": surface triangle ", w / 3, " is not a face of any tetrahedron"));
+      }
+      // Counter-clockwise seen from outside: the normal points away from the tetrahedron.
+      const Vec3 a = draft.node(triangle[0]);
+      const Vec3 normal = (draft.node(triangle[1]) - a).cross(draft.node(triangle[2]) - a);
+      if (normal.dot(draft.node(opposite->second) - a) > 0.0) std::swap(triangle[1], triangle[2]);
+      groups[group].push_back(triangle);
     }
-    const auto opposite =
-        opposite_of_face.find(SortedTriangle(triangle[0], triangle[1], triangle[2]));
-    if (opposite == opposite_of_face.end()) {
-      return absl::InternalError(absl::StrCat("ThinPrismVessel: wall triangle ", w / 3,
-                                              " is not a face of any tetrahedron"));
-    }
-    // Counter-clockwise seen from outside: the normal points away from the tetrahedron.
-    const Vec3 a = draft.node(triangle[0]);
-    const Vec3 normal = (draft.node(triangle[1]) - a).cross(draft.node(triangle[2]) - a);
-    if (normal.dot(draft.node(opposite->second) - a) > 0.0) std::swap(triangle[1], triangle[2]);
-    vessel.wall_triangles.push_back(triangle);
   }
+  return groups;
+}
+
+absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, MeshDraft& draft) {
+  RawGmshMesh raw;
+  if (absl::Status status = RunGmsh(
+          [&options](RawGmshMesh& out) { GenerateWithGmsh(options, out); }, raw, "ThinPrismVessel");
+      !status.ok()) {
+    return status;
+  }
+  absl::StatusOr<std::vector<std::vector<std::array<NodeId, 3>>>> surfaces =
+      ImportGmshTets(raw, draft, "ThinPrismVessel");
+  if (!surfaces.ok()) return surfaces.status();
+  TetVessel vessel;
+  vessel.wall_triangles = std::move((*surfaces)[0]);
   return vessel;
 }
 

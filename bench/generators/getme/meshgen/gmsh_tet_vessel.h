@@ -1,6 +1,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "absl/status/statusor.h"
@@ -24,5 +27,32 @@ struct TetVessel {
 double SegmentLength(const ThinPrismVesselOptions& options);
 
 absl::StatusOr<TetVessel> MeshTetVessel(const ThinPrismVesselOptions& options, MeshDraft& draft);
+
+// What a gmsh run hands back: all nodes, the tetrahedra, and the triangles of some groups of
+// surfaces (gmsh node tags throughout).
+struct RawGmshMesh {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> node_coords;
+  std::vector<std::size_t> tet_nodes;                   // 4 tags per tetrahedron
+  std::vector<std::vector<std::size_t>> surface_nodes;  // per group, 3 tags per triangle
+};
+
+// Runs `generate` in its own gmsh session (initialised without config files, always finalised),
+// one caller at a time: gmsh keeps one global model. A gmsh exception becomes Internal, prefixed
+// with `who`. Every gmsh call must happen inside `generate`.
+absl::Status RunGmsh(const std::function<void(RawGmshMesh&)>& generate, RawGmshMesh& raw,
+                     const std::string& who);
+
+// Inside `generate`, after meshing: reads the nodes, the tetrahedra and, for each group of surface
+// tags, the triangles of those surfaces into `raw`.
+void ReadGmshMesh(const std::vector<std::vector<int>>& surface_groups, RawGmshMesh& raw);
+
+// Adds the tetrahedra of `raw` to `draft` (nodes compacted to those the tetrahedra use, in
+// ascending tag order; every tetrahedron oriented valid) and returns each surface group's
+// triangles, each counter-clockwise seen from outside (its normal points away from its
+// tetrahedron). Internal, prefixed with `who`, when a group is empty, a triangle is no
+// tetrahedron's face, or a tetrahedron is degenerate.
+absl::StatusOr<std::vector<std::vector<std::array<NodeId, 3>>>> ImportGmshTets(
+    const RawGmshMesh& raw, MeshDraft& draft, const std::string& who);
 
 }  // namespace getme::meshgen

@@ -1,5 +1,6 @@
 #include "getme/meshgen/meshgen_command.h"
 
+#include <utility>
 #include <vector>
 
 #include "absl/strings/numbers.h"
@@ -19,10 +20,11 @@ absl::StatusOr<MeshKind> ParseKind(const std::string& kind) {
   if (kind == "tet") return MeshKind::kTetBlock;
   if (kind == "hybrid") return MeshKind::kHybridBlock;
   if (kind == "vessel") return MeshKind::kVessel;
+  if (kind == "artery") return MeshKind::kArtery;
   if (kind == "plate") return MeshKind::kPlate;
   if (kind == "ring") return MeshKind::kRing;
   return absl::InvalidArgumentError(absl::StrCat(
-      "unknown mesh kind '", kind, "'; expected plate, ring, vessel, hex, tet or hybrid"));
+      "unknown mesh kind '", kind, "'; expected plate, ring, vessel, artery, hex, tet or hybrid"));
 }
 
 absl::Status ParseSize(const std::string& flag, const std::string& value, MeshgenCommand& command) {
@@ -111,15 +113,41 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
       status = ParseNumber(arg, value, command.seed);
     } else if (arg == "--mesh-size") {
       status = ParseNumber(arg, value, command.vessel.mesh_size);
+      command.artery.mesh_size = command.vessel.mesh_size;
       mesh_size_given = true;
     } else if (arg == "--radius") {
       status = ParseNumber(arg, value, command.vessel.radius);
+      command.artery.radius = command.vessel.radius;
     } else if (arg == "--length") {
       status = ParseNumber(arg, value, command.vessel.length);
+      command.artery.length = command.vessel.length;
     } else if (arg == "--bend-angle") {
       status = ParseNumber(arg, value, command.vessel.bend_angle);
     } else if (arg == "--layers") {
       status = ParseNumber(arg, value, command.vessel.layers);
+      command.artery.inward_layers = command.vessel.layers;
+    } else if (arg == "--outer-layers") {
+      status = ParseNumber(arg, value, command.artery.outward_layers);
+    } else if (arg == "--helix-radius") {
+      status = ParseNumber(arg, value, command.artery.helix_radius);
+    } else if (arg == "--turn-angle") {
+      status = ParseNumber(arg, value, command.artery.turn_angle);
+    } else if (arg == "--taper") {
+      status = ParseNumber(arg, value, command.artery.taper);
+    } else if (arg == "--stenosis") {
+      status = ParseNumber(arg, value, command.artery.stenosis);
+    } else if (arg == "--branches") {
+      status = ParseNumber(arg, value, command.artery.branches);
+    } else if (arg == "--branch-radius-ratio") {
+      status = ParseNumber(arg, value, command.artery.branch_radius_ratio);
+    } else if (arg == "--branch-length") {
+      status = ParseNumber(arg, value, command.artery.branch_length);
+    } else if (arg == "--junction-fillet") {
+      status = ParseNumber(arg, value, command.artery.junction_fillet);
+    } else if (arg == "--first-layer-ratio") {
+      status = ParseNumber(arg, value, command.artery.first_layer_ratio);
+    } else if (arg == "--growth-ratio") {
+      status = ParseNumber(arg, value, command.artery.growth_ratio);
     } else if (arg == "--layer-height-ratio") {
       status = ParseNumber(arg, value, command.vessel.layer_height_ratio);
     } else {
@@ -136,6 +164,7 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
   command.kind = *kind;
   command.output_path = positional[1];
   command.vessel.seed = command.seed;
+  command.artery.seed = command.seed;
   const bool sized_kind = command.kind == MeshKind::kPlate || command.kind == MeshKind::kRing ||
                           command.kind == MeshKind::kVessel;
   if (command.elements.has_value() && !sized_kind) {
@@ -148,7 +177,7 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
   return command;
 }
 
-absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
+absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command, std::string* note) {
   const double block_distortion = command.distortion.value_or(kBlockDistortion);
   switch (command.kind) {
     case MeshKind::kHexBlock:
@@ -161,6 +190,19 @@ absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command) {
       return ThinPrismVessel(command.elements.has_value()
                                  ? VesselOptionsForElements(*command.elements, command.vessel)
                                  : command.vessel);
+    case MeshKind::kArtery: {
+      absl::StatusOr<ArteryMesh> artery = GenerateArtery(command.artery);
+      if (!artery.ok()) return artery.status();
+      if (note != nullptr) {
+        const BoundaryLayerReport& layers = artery->layers;
+        *note = absl::StrCat(
+            "first layer height ", artery->first_layer_height, " (",
+            command.artery.first_layer_ratio, " x mean wall edge ", artery->mean_wall_edge, "), ",
+            artery->caps.size(), " openings; stacks thinned: ", layers.thinned_inward, " inward, ",
+            layers.thinned_outward, " outward of ", layers.wall_vertices, " wall nodes");
+      }
+      return std::move(artery->mesh);
+    }
     case MeshKind::kPlate:
       return PlateWithHoles(SizedOptions<PlateWithHolesOptions>(command));
     case MeshKind::kRing:
