@@ -11,6 +11,7 @@
 #include "getme/elements/mean_ratio_derivatives.h"
 #include "getme/elements/vec3.h"
 #include "getme/mesh/node_colouring.h"
+#include "getme/mesh/node_positions.h"
 #include "getme/parallel/block_loops.h"
 
 namespace getme {
@@ -141,8 +142,11 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   auto y = mesh.y();
   auto z = mesh.z();
   const Vec3 start(x[node], y[node], z[node]);
-  double alpha = 1.0;
-  for (int attempt = 0; attempt <= context.params.polish_backtracking_steps; ++attempt) {
+  // Over-relaxed first (successive over-relaxation of the Gauss–Seidel sweep: the node-local
+  // Newton step undershoots where neighbours will move the same way next, as across the layers
+  // of a thin stack), then the plain step, then halvings.
+  double alpha = context.params.polish_over_relaxation;
+  for (int attempt = -1; attempt <= context.params.polish_backtracking_steps; ++attempt) {
     const Vec3 trial = start + alpha * d;
     x[node] = trial[0];
     y[node] = trial[1];
@@ -163,7 +167,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
       state.MarkNeighbourhood(mesh, node);
       return NodeStep::kMoved;
     }
-    alpha *= 0.5;
+    alpha = attempt < 0 ? 1.0 : 0.5 * alpha;
   }
   x[node] = start[0];
   y[node] = start[1];
@@ -187,13 +191,22 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
   SmoothingContext::Summary current = context.Summarize();
   state.q_floor = current.q_min;
   PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
-  // Refused steps per chunk of a colour, summed after the ParallelFor: an integer, so any order
-  // gives the same count, but the chunks' counters must not be shared.
+  // Refused and moved steps per chunk of a colour, summed after the ParallelFor: integers, so any
+  // order gives the same counts, but the chunks' counters must not be shared.
   std::vector<std::int64_t> refused_per_chunk;
+  std::vector<std::int64_t> moved_per_chunk;
+  // The best-q_mean state: the cost falls with every accepted step, but q_mean, the measure that
+  // counts, need not rise with it (over-relaxed steps trade a little of it early on). Copied
+  // before a sweep only while the mesh itself is the best state.
+  double best_q_mean = current.q_mean;
+  std::int64_t best_sweep = 0;
+  NodePositions best_positions;
   double previous_gain = 0.0;
   bool cancelled = false;
   for (std::int64_t sweep = 1; sweep <= params.polish_max_sweeps; ++sweep) {
+    if (best_sweep == sweep - 1) best_positions.CopyFrom(mesh);
     std::int64_t refused = 0;
+    std::int64_t moved = 0;
     for (int c = 0; c < colouring.colour_count() && !cancelled; ++c) {
       if (context.Cancelled()) {
         cancelled = true;
@@ -201,15 +214,22 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
       }
       const std::span<const NodeId> nodes = colouring.Colour(c);
       const auto count = static_cast<std::int64_t>(nodes.size());
-      refused_per_chunk.assign((count + kNodeGrain - 1) / kNodeGrain, 0);
+      const std::int64_t chunks = (count + kNodeGrain - 1) / kNodeGrain;
+      refused_per_chunk.assign(chunks, 0);
+      moved_per_chunk.assign(chunks, 0);
       context.pool.ParallelFor(count, kNodeGrain, [&](std::int64_t begin, std::int64_t end) {
         std::int64_t chunk_refused = 0;
+        std::int64_t chunk_moved = 0;
         for (std::int64_t i = begin; i < end; ++i) {
-          chunk_refused += PolishNode(context, nodes[i], state) == NodeStep::kRefused;
+          const NodeStep step = PolishNode(context, nodes[i], state);
+          chunk_refused += step == NodeStep::kRefused;
+          chunk_moved += step == NodeStep::kMoved;
         }
         refused_per_chunk[begin / kNodeGrain] += chunk_refused;
+        moved_per_chunk[begin / kNodeGrain] += chunk_moved;
       });
       for (std::int64_t r : refused_per_chunk) refused += r;
+      for (std::int64_t m : moved_per_chunk) moved += m;
     }
     if (cancelled) break;
     const double previous_q_mean = current.q_mean;
@@ -219,18 +239,27 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
     summary.reverted_nodes += refused;
     context.Report({Phase::kPolish, sweep, current.q_min, current.q_mean, current.invalid, refused,
                     context.ElapsedSeconds(), false});
-    // Stop rule (issue 14, item 2): what counts is q_mean, not the cost the steps lower. The gain
-    // of a sweep shrinks about geometrically (Gauss–Seidel on a convex problem converges
-    // linearly), so the q_mean still to come is about gain · r / (1 − r), r = the ratio of the
-    // last two sweeps' gains. Stop when that estimate is below polish_tolerance, or as soon as a
-    // sweep no longer raises q_mean at all.
+    if (current.q_mean > best_q_mean) {
+      best_q_mean = current.q_mean;
+      best_sweep = sweep;
+    }
+    // Stop rule (issue 14, item 2): what counts is q_mean, not the cost the steps lower. Once the
+    // sweeps settle, the gain of a sweep shrinks about geometrically (Gauss–Seidel on a convex
+    // problem converges linearly), so the q_mean still to come is about gain · r / (1 − r),
+    // r = the ratio of the last two gains. Stop when that estimate is below polish_tolerance,
+    // after two sweeps without a new best q_mean, or when no node moved (nothing can change).
+    if (moved == 0 || sweep - best_sweep >= 2) break;
     const double gain = current.q_mean - previous_q_mean;
-    if (!(gain > 0.0)) break;
-    if (sweep >= 2) {
+    if (gain > 0.0 && previous_gain > 0.0) {
       const double ratio = std::min(gain / previous_gain, kMaxGainRatio);
       if (gain * ratio / (1.0 - ratio) < params.polish_tolerance) break;
     }
     previous_gain = gain;
+  }
+  if (best_sweep != summary.iterations) {
+    best_positions.CopyTo(mesh);
+    context.RefreshQuality();
+    current = context.Summarize();
   }
   context.FinishPhase(summary, current, phase_start);
   if (cancelled) return absl::CancelledError("smoothing cancelled during the polish stage");

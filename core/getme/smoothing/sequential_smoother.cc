@@ -23,11 +23,12 @@ struct NodeBackup {
 
 class SequentialSubstep {
  public:
-  SequentialSubstep(SmoothingContext& context, SelectionCriterion criterion)
+  SequentialSubstep(SmoothingContext& context, SelectionCriterion criterion, SequentialStop stop)
       : context_(context),
         mesh_(context.mesh),
         params_(context.params),
         criterion_(criterion),
+        stop_(stop),
         phase_(criterion == SelectionCriterion::kMeanRatio ? Phase::kSequential : Phase::kWarpage),
         penalty_(mesh_.element_count(), 0.0),
         criterion_value_(mesh_.element_count()),
@@ -48,6 +49,7 @@ class SequentialSubstep {
   Mesh& mesh_;
   const SmoothingParams& params_;
   const SelectionCriterion criterion_;
+  const SequentialStop stop_;
   const Phase phase_;
   std::vector<double> penalty_;          // π_j ≥ 0
   std::vector<double> criterion_value_;  // q(E_j) or q_γ(E_j)
@@ -191,9 +193,13 @@ void SequentialSubstep::RestoreBest() {
 absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const double phase_start = context_.ElapsedSeconds();
   const std::int64_t elements = mesh_.element_count();
-  const std::int64_t window = params_.sequential_stall_iterations > 0
-                                  ? params_.sequential_stall_iterations
-                                  : std::max<std::int64_t>(1000, elements);
+  const bool sliding = stop_ == SequentialStop::kHandOnToPolish;
+  const std::int64_t window =
+      sliding ? (params_.sequential_handoff_window > 0
+                     ? params_.sequential_handoff_window
+                     : std::max<std::int64_t>(1000, elements / 10))
+              : (params_.sequential_stall_iterations > 0 ? params_.sequential_stall_iterations
+                                                         : std::max<std::int64_t>(1000, elements));
   const std::int64_t cap =
       params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 50 * elements;
 
@@ -212,6 +218,9 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   double best_min = criterion_min_.top_key();
   double window_start_min = best_min;
   std::int64_t window_start = 0;
+  // Sliding rule: the pick at which the best minimum last rose by the tolerance, and that value.
+  double risen_min = best_min;
+  std::int64_t risen_pick = 0;
   std::int64_t cycle_reverts = 0;
   bool cancelled = false;
   std::int64_t pick = 0;
@@ -225,7 +234,13 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
     }
     // Stop rule: the best minimum rose by less than the tolerance over the last window of picks.
     bool stalled = false;
-    if (pick - window_start >= window) {
+    if (sliding) {
+      if (best_min - risen_min >= params_.sequential_improvement_tolerance) {
+        risen_min = best_min;
+        risen_pick = pick;
+      }
+      stalled = pick - risen_pick >= window;
+    } else if (pick - window_start >= window) {
       stalled = best_min - window_start_min < params_.sequential_improvement_tolerance;
       window_start_min = best_min;
       window_start = pick;
@@ -255,8 +270,8 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
 }  // namespace
 
 absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context,
-                                           SelectionCriterion criterion) {
-  return SequentialSubstep(context, criterion).Run();
+                                           SelectionCriterion criterion, SequentialStop stop) {
+  return SequentialSubstep(context, criterion, stop).Run();
 }
 
 }  // namespace getme

@@ -10,10 +10,25 @@ namespace getme {
 // criterion q_γ = min(q, γ(1 − w/2)) of the warpage variant (Sec. 4.4).
 enum class SelectionCriterion { kMeanRatio, kQualityGamma };
 
+// When the sequential substep stops (docs/paper-notes.md#sequential-stop-rule; the paper leaves
+// it open).
+enum class SequentialStop {
+  // The best minimum rose by less than sequential_improvement_tolerance over a window of
+  // sequential_stall_iterations picks (0: max(1000, elements)), windows taken one after another.
+  // The rule of --method sequential, the warpage variant and GETMe without the polish.
+  kStalledWindow,
+  // Beyond the paper (issue 14, item 2), when the polish follows: stop as soon as the last
+  // sequential_handoff_window picks (0: max(1000, elements / 10)) raised the best minimum by less
+  // than sequential_improvement_tolerance, a sliding window. It stops one window after the rise
+  // ends instead of one to two mesh-sized windows later (docs/quality.md has the measured trade).
+  kHandOnToPolish,
+};
+
 // GETMe sequential (Sec. 3.2): repeatedly transform the element with the lowest corrected quality
 // q + π in place (indexed min-heap with key updates), revert it if a neighbour becomes invalid,
 // and adjust its penalty π. Hands on the best state seen (highest minimum criterion value).
 // Requires a valid mesh; returns Cancelled (mesh valid, best state restored) if cancelled.
-absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion);
+absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion,
+                                           SequentialStop stop = SequentialStop::kStalledWindow);
 
 }  // namespace getme

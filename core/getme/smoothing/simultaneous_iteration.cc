@@ -17,18 +17,6 @@ constexpr std::int64_t kNodeGrain = 1024;
 
 }  // namespace
 
-void NodePositions::CopyFrom(const Mesh& mesh) {
-  x.assign(mesh.x().begin(), mesh.x().end());
-  y.assign(mesh.y().begin(), mesh.y().end());
-  z.assign(mesh.z().begin(), mesh.z().end());
-}
-
-void NodePositions::CopyTo(Mesh& mesh) const {
-  std::copy(x.begin(), x.end(), mesh.x().begin());
-  std::copy(y.begin(), y.end(), mesh.y().begin());
-  std::copy(z.begin(), z.end(), mesh.z().begin());
-}
-
 SimultaneousIteration::SimultaneousIteration(const Mesh& mesh)
     : corner_xyz_(3 * mesh.corner_count()), element_weight_(mesh.element_count()) {
   previous_.x.resize(mesh.node_count());

@@ -4,17 +4,10 @@
 #include <vector>
 
 #include "getme/mesh/mesh.h"
+#include "getme/mesh/node_positions.h"
 #include "getme/smoothing/smoothing_context.h"
 
 namespace getme {
-
-// Node coordinates of a whole mesh, structure of arrays like Mesh's own.
-struct NodePositions {
-  std::vector<double> x, y, z;
-
-  void CopyFrom(const Mesh& mesh);
-  void CopyTo(Mesh& mesh) const;
-};
 
 // One iteration of the simultaneous substep (Sec. 3.1, Steps 1–3) on context.mesh, with its
 // buffers allocated once per phase rather than per iteration. RunSimultaneous drives it; the

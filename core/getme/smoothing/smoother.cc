@@ -88,7 +88,10 @@ absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
           !s.ok()) {
         return s;
       }
-      if (auto s = record(RunSequential(context, SelectionCriterion::kMeanRatio)); !s.ok()) {
+      if (auto s = record(RunSequential(
+              context, SelectionCriterion::kMeanRatio,
+              polish ? SequentialStop::kHandOnToPolish : SequentialStop::kStalledWindow));
+          !s.ok()) {
         return s;
       }
       if (method == Method::kWarpage) {

@@ -111,7 +111,8 @@ absl::Status SmoothingParams::Validate() const {
                                     {"laplace_max_iterations", laplace_max_iterations},
                                     {"untangle_max_iterations", untangle_max_iterations},
                                     {"polish_max_sweeps", polish_max_sweeps},
-                                    {"simultaneous_handoff_window", simultaneous_handoff_window}}) {
+                                    {"simultaneous_handoff_window", simultaneous_handoff_window},
+                                    {"sequential_handoff_window", sequential_handoff_window}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {
@@ -123,6 +124,9 @@ absl::Status SmoothingParams::Validate() const {
   }
   if (sequential_backtracking_steps < 0 || sequential_backtracking_steps > 30) {
     return OutOfRange("sequential_backtracking_steps", sequential_backtracking_steps, "in [0, 30]");
+  }
+  if (!(polish_over_relaxation >= 1.0 && polish_over_relaxation < 2.0)) {
+    return OutOfRange("polish_over_relaxation", polish_over_relaxation, "in [1, 2)");
   }
   if (polish_backtracking_steps < 0 || polish_backtracking_steps > 30) {
     return OutOfRange("polish_backtracking_steps", polish_backtracking_steps, "in [0, 30]");
