@@ -39,7 +39,12 @@ struct PolishState {
     for (auto& flag : stale) flag.store(1, std::memory_order_relaxed);
   }
 
-  double q_floor = 0.0;  // the mesh's q_min when the stage began
+  // The stage's cost per element is c(E)^exponent (mean_ratio_derivatives.h for c): 1 for the
+  // mean stage, larger for the worst-element stage, where it weights the worst elements most.
+  double exponent = 1.0;
+  // No accepted step leaves an element below this: the mesh's q_min when the mean stage began
+  // (the worst-element stage has no floor: it hands on its best-q_min state instead).
+  double q_floor = 0.0;
   std::vector<double> trial_quality;
   // 1 while something in the node's elements moved since its last step was tried. A node whose
   // neighbourhood is unchanged would compute the same refused (or converged) step again, so
@@ -57,10 +62,18 @@ struct PolishState {
 
 enum class NodeStep { kSkipped, kConverged, kRefused, kMoved };
 
-// The summed cost, gradient and Hessian of `node`'s elements with respect to the node, in the
-// fixed order of its node_elements row. False if an element is already past the barrier.
-bool NodeDerivatives(const Mesh& mesh, NodeId node, double& cost, Vec3& gradient,
-                     Eigen::Matrix3d& hessian) {
+// c^p: the power only where the worst-element stage asks for it, so the mean stage's bits do not
+// depend on how std::pow rounds.
+double Powered(double cost, double exponent) {
+  return exponent == 1.0 ? cost : std::pow(cost, exponent);
+}
+
+// The summed cost Σ c(E)^p, gradient and Hessian of `node`'s elements with respect to the node,
+// in the fixed order of its node_elements row. With p ≠ 1 by the chain rule:
+// ∇c^p = p c^{p−1} ∇c, ∇²c^p = p c^{p−1} ∇²c + p (p − 1) c^{p−2} ∇c ∇cᵀ (positive semi-definite
+// where ∇²c is, for p ≥ 1). False if an element is already past the barrier.
+bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cost,
+                     Vec3& gradient, Eigen::Matrix3d& hessian) {
   cost = 0.0;
   gradient.setZero();
   hessian.setZero();
@@ -70,10 +83,19 @@ bool NodeDerivatives(const Mesh& mesh, NodeId node, double& cost, Vec3& gradient
     const bool finite = DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
       const InverseMeanRatioHessianResult r =
           InverseMeanRatioHessian<kType>(GatherNodes<kType>(mesh, ids.data()), local);
-      cost += r.cost;
-      gradient += r.gradient;
-      hessian += r.hessian;
-      return std::isfinite(r.cost);
+      if (!std::isfinite(r.cost)) return false;
+      if (exponent == 1.0) {
+        cost += r.cost;
+        gradient += r.gradient;
+        hessian += r.hessian;
+      } else {
+        const double first = exponent * std::pow(r.cost, exponent - 1.0);
+        const double second = exponent * (exponent - 1.0) * std::pow(r.cost, exponent - 2.0);
+        cost += std::pow(r.cost, exponent);
+        gradient += first * r.gradient;
+        hessian += first * r.hessian + second * (r.gradient * r.gradient.transpose());
+      }
+      return true;
     });
     if (!finite) return false;
   }
@@ -91,7 +113,7 @@ bool EvaluateTrial(const Mesh& mesh, NodeId node, PolishState& state, double& co
       const InverseMeanRatioCostAndQuality r = CostAndQuality<kType>(GatherNodes<kType>(mesh, ids));
       if (r.quality == kInvalidQuality) return false;
       state.trial_quality[e] = r.quality;
-      cost += r.cost;
+      cost += Powered(r.cost, state.exponent);
       q_min = std::min(q_min, r.quality);
       return true;
     });
@@ -112,7 +134,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   double old_cost = 0.0;
   Vec3 g;
   Eigen::Matrix3d h;
-  if (!NodeDerivatives(mesh, node, old_cost, g, h)) return NodeStep::kRefused;
+  if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h)) return NodeStep::kRefused;
   if (!g.allFinite() || g.squaredNorm() == 0.0) return NodeStep::kConverged;
 
   // Newton direction from the summed 3×3 Hessian (positive semi-definite where the elements are
@@ -175,35 +197,42 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   return NodeStep::kRefused;
 }
 
-}  // namespace
+// What a stage of the polish keeps and hands on.
+enum class StageGoal {
+  // Worst-element stage: the best-q_min state (ties: the higher q_mean); no floor while it runs.
+  kQMin,
+  // Mean stage: the best-q_mean state, never an element below the floor.
+  kQMean,
+};
 
-absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
-  const double phase_start = context.ElapsedSeconds();
+// Sweeps of one stage over the colours; adds its sweeps and refusals to `summary` and reports a
+// progress event per sweep, numbered on from summary.iterations. Leaves the handed-on state in
+// the mesh, context.quality and `current`. Returns false if cancelled.
+bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishState& state,
+              StageGoal goal, std::int64_t max_sweeps, SmoothingContext::Summary& current,
+              PhaseSummary& summary) {
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
-  // Once per call, in a fixed order: the sets, and so the order of the node steps, depend on the
-  // mesh and the free nodes only.
-  const NodeColouring colouring = ColourNodes(mesh, context.movable);
-
-  PolishState state(mesh.node_count());
-  state.trial_quality.assign(mesh.element_count(), 0.0);
-
-  SmoothingContext::Summary current = context.Summarize();
-  state.q_floor = current.q_min;
-  PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
+  for (auto& flag : state.stale) flag.store(1, std::memory_order_relaxed);
   // Refused and moved steps per chunk of a colour, summed after the ParallelFor: integers, so any
   // order gives the same counts, but the chunks' counters must not be shared.
   std::vector<std::int64_t> refused_per_chunk;
   std::vector<std::int64_t> moved_per_chunk;
-  // The best-q_mean state: the cost falls with every accepted step, but q_mean, the measure that
-  // counts, need not rise with it (over-relaxed steps trade a little of it early on). Copied
-  // before a sweep only while the mesh itself is the best state.
-  double best_q_mean = current.q_mean;
+  // The best state so far: the cost falls with every accepted step, but neither q_mean nor q_min,
+  // the measures that count, need rise with it (over-relaxed steps trade a little of q_mean early
+  // on; the worst-element stage lets q_min dip on its way up). Copied before a sweep only while
+  // the mesh itself is the best state.
+  auto better = [goal](const SmoothingContext::Summary& a, const SmoothingContext::Summary& b) {
+    if (goal == StageGoal::kQMean) return a.q_mean > b.q_mean;
+    return a.q_min > b.q_min || (a.q_min == b.q_min && a.q_mean > b.q_mean);
+  };
+  SmoothingContext::Summary best = current;
   std::int64_t best_sweep = 0;
   NodePositions best_positions;
   double previous_gain = 0.0;
   bool cancelled = false;
-  for (std::int64_t sweep = 1; sweep <= params.polish_max_sweeps; ++sweep) {
+  std::int64_t done = 0;  // complete sweeps of this stage
+  for (std::int64_t sweep = 1; sweep <= max_sweeps; ++sweep) {
     if (best_sweep == sweep - 1) best_positions.CopyFrom(mesh);
     std::int64_t refused = 0;
     std::int64_t moved = 0;
@@ -232,37 +261,76 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
       for (std::int64_t m : moved_per_chunk) moved += m;
     }
     if (cancelled) break;
-    const double previous_q_mean = current.q_mean;
+    const SmoothingContext::Summary previous = current;
     current = context.Summarize();
-    summary.iterations = sweep;
+    done = sweep;
+    ++summary.iterations;
     // A node whose step was refused stayed where it was: the polish's "reverted" nodes.
     summary.reverted_nodes += refused;
-    context.Report({Phase::kPolish, sweep, current.q_min, current.q_mean, current.invalid, refused,
-                    context.ElapsedSeconds(), false});
-    if (current.q_mean > best_q_mean) {
-      best_q_mean = current.q_mean;
+    context.Report({Phase::kPolish, summary.iterations, current.q_min, current.q_mean,
+                    current.invalid, refused, context.ElapsedSeconds(), false});
+    if (better(current, best)) {
+      best = current;
       best_sweep = sweep;
     }
-    // Stop rule (issue 14, item 2): what counts is q_mean, not the cost the steps lower. Once the
-    // sweeps settle, the gain of a sweep shrinks about geometrically (Gauss–Seidel on a convex
-    // problem converges linearly), so the q_mean still to come is about gain · r / (1 − r),
-    // r = the ratio of the last two gains. Stop when that estimate is below polish_tolerance,
-    // after two sweeps without a new best q_mean, or when no node moved (nothing can change).
+    // Stop rules (issue 14, item 2), on the measure the stage serves, not on the cost its steps
+    // lower: after two sweeps without a new best, or when no node moved (nothing can change).
     if (moved == 0 || sweep - best_sweep >= 2) break;
-    const double gain = current.q_mean - previous_q_mean;
+    // Once the sweeps settle, the gain of a sweep shrinks about geometrically (Gauss–Seidel on a
+    // convex problem converges linearly), so what is still to come is about gain · r / (1 − r),
+    // r = the ratio of the last two gains: stop when that is below the stage's tolerance.
+    const double gain = goal == StageGoal::kQMean ? current.q_mean - previous.q_mean
+                                                  : current.q_min - previous.q_min;
+    const double tolerance = goal == StageGoal::kQMean
+                                 ? params.polish_tolerance
+                                 : params.polish_worst_tolerance * current.q_min;
     if (gain > 0.0 && previous_gain > 0.0) {
       const double ratio = std::min(gain / previous_gain, kMaxGainRatio);
-      if (gain * ratio / (1.0 - ratio) < params.polish_tolerance) break;
+      if (gain * ratio / (1.0 - ratio) < tolerance) break;
     }
     previous_gain = gain;
   }
-  if (best_sweep != summary.iterations) {
+  // The mesh holds a later state than the best (or, cancelled, a partly swept one): the best's
+  // snapshot was taken before the sweep that followed it.
+  if (cancelled || best_sweep != done) {
     best_positions.CopyTo(mesh);
     context.RefreshQuality();
     current = context.Summarize();
   }
+  return !cancelled;
+}
+
+}  // namespace
+
+absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
+  const double phase_start = context.ElapsedSeconds();
+  Mesh& mesh = context.mesh;
+  const SmoothingParams& params = context.params;
+  // Once per call, in a fixed order: the sets, and so the order of the node steps, depend on the
+  // mesh and the free nodes only.
+  const NodeColouring colouring = ColourNodes(mesh, context.movable);
+  PolishState state(mesh.node_count());
+  state.trial_quality.assign(mesh.element_count(), 0.0);
+
+  SmoothingContext::Summary current = context.Summarize();
+  PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
+  bool finished = true;
+  // Worst elements first: the mean stage cannot lower q_min, so whatever q_min the polish is to
+  // reach must come before it.
+  if (params.polish_worst_exponent > 1.0 && params.polish_worst_max_sweeps > 0) {
+    state.exponent = params.polish_worst_exponent;
+    state.q_floor = 0.0;
+    finished = RunStage(context, colouring, state, StageGoal::kQMin, params.polish_worst_max_sweeps,
+                        current, summary);
+  }
+  if (finished) {
+    state.exponent = 1.0;
+    state.q_floor = current.q_min;
+    finished = RunStage(context, colouring, state, StageGoal::kQMean, params.polish_max_sweeps,
+                        current, summary);
+  }
   context.FinishPhase(summary, current, phase_start);
-  if (cancelled) return absl::CancelledError("smoothing cancelled during the polish stage");
+  if (!finished) return absl::CancelledError("smoothing cancelled during the polish stage");
   return summary;
 }
 

@@ -197,7 +197,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const std::int64_t window =
       sliding ? (params_.sequential_handoff_window > 0
                      ? params_.sequential_handoff_window
-                     : std::max<std::int64_t>(1000, elements / 10))
+                     : std::max<std::int64_t>(1000, elements / 4))
               : (params_.sequential_stall_iterations > 0 ? params_.sequential_stall_iterations
                                                          : std::max<std::int64_t>(1000, elements));
   const std::int64_t cap =

@@ -18,7 +18,7 @@ enum class SequentialStop {
   // The rule of --method sequential, the warpage variant and GETMe without the polish.
   kStalledWindow,
   // Beyond the paper (issue 14, item 2), when the polish follows: stop as soon as the last
-  // sequential_handoff_window picks (0: max(1000, elements / 10)) raised the best minimum by less
+  // sequential_handoff_window picks (0: max(1000, elements / 4)) raised the best minimum by less
   // than sequential_improvement_tolerance, a sliding window. It stops one window after the rise
   // ends instead of one to two mesh-sized windows later (docs/quality.md has the measured trade).
   kHandOnToPolish,

@@ -100,7 +100,9 @@ absl::Status SmoothingParams::Validate() const {
         {"sequential_improvement_tolerance", sequential_improvement_tolerance},
         {"polish_tolerance", polish_tolerance},
         {"polish_node_tolerance", polish_node_tolerance},
-        {"simultaneous_handoff_gain", simultaneous_handoff_gain}}) {
+        {"simultaneous_handoff_gain", simultaneous_handoff_gain},
+        {"polish_worst_tolerance", polish_worst_tolerance},
+        {"polish_worst_exponent", polish_worst_exponent}}) {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
@@ -112,7 +114,8 @@ absl::Status SmoothingParams::Validate() const {
                                     {"untangle_max_iterations", untangle_max_iterations},
                                     {"polish_max_sweeps", polish_max_sweeps},
                                     {"simultaneous_handoff_window", simultaneous_handoff_window},
-                                    {"sequential_handoff_window", sequential_handoff_window}}) {
+                                    {"sequential_handoff_window", sequential_handoff_window},
+                                    {"polish_worst_max_sweeps", polish_worst_max_sweeps}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {

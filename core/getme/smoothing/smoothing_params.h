@@ -66,7 +66,7 @@ struct SmoothingParams {
   std::int64_t sequential_max_iterations = 0;
   double sequential_improvement_tolerance = 1e-3;
   // With the polish on (SequentialStop::kHandOnToPolish): stop once the last this many picks
-  // (0: max(1000, elements / 10)) raised the best q_min by less than the tolerance above.
+  // (0: max(1000, elements / 4)) raised the best q_min by less than the tolerance above.
   std::int64_t sequential_handoff_window = 0;
   // Safeguard (docs/quality.md): a step that would make a neighbour invalid is retried at half
   // its length up to this many times before it counts as reverted (Step 3.1). 0 = the paper.
@@ -116,6 +116,16 @@ struct SmoothingParams {
   // A node whose Newton step would lower its cost by less than this fraction of it counts as
   // converged and stays (and a node is tried again only once something around it moved).
   double polish_node_tolerance = 1e-6;
+  // Worst-element stage, before the mean stage: the same node-local Newton steps on Σ c(E)^p with
+  // p = polish_worst_exponent (0 or 1: no such stage), which weights the worst elements most and
+  // so lifts q_min, with no floor while it runs (a node may trade one element's quality for a
+  // worse neighbour's, which a max-min step cannot) and its best-q_min state handed on. Stops
+  // when the q_min still to gain, extrapolated as in the mean stage, is below
+  // polish_worst_tolerance × q_min, after two sweeps without a new best, or after
+  // polish_worst_max_sweeps.
+  double polish_worst_exponent = 6.0;
+  double polish_worst_tolerance = 1e-3;
+  std::int64_t polish_worst_max_sweeps = 100;
   // Each node first tries its Newton step times this factor (successive over-relaxation), then
   // the plain step, then halvings. Measured in docs/quality.md#polish: on the thin-layer artery
   // meshes 1.8 needs 17 sweeps where 1.0 needs 97, for a higher q_mean. 1 = plain Gauss–Seidel.
