@@ -1,5 +1,6 @@
-// GETMe against Mesquite 2.99's feasible-Newton shape improvement on the shared meshes (reference
-// numbers from ../shared/meshes/README.md): at least Mesquite's q_min, q_mean within 0.01 of it.
+// The default run (GETMe and the polish) against Mesquite 2.99's feasible-Newton shape improvement
+// on the shared meshes (reference numbers from ../shared/meshes/README.md): issue 14's quality
+// targets, at least Mesquite's q_min and q_mean no more than 0.002 below Mesquite's.
 
 #include <gtest/gtest.h>
 
@@ -34,7 +35,7 @@ TEST_P(MesquiteReferenceTest, GetmeReachesMesquiteQuality) {
   EXPECT_EQ(testing::CountInvalid(mesh), 0);
   // The references are rounded to 4 digits: allow half a unit of the last digit.
   EXPECT_GE(result->after.q_min, reference.q_min - 5e-5) << reference.file;
-  EXPECT_GE(result->after.q_mean, reference.q_mean - 0.01) << reference.file;
+  EXPECT_GE(result->after.q_mean, reference.q_mean - 0.002) << reference.file;
   EXPECT_GT(result->after.q_mean, result->before.q_mean);
   if (reference.invalid_before > 0) {
     EXPECT_GT(result->iterations_untangle, 0);
@@ -58,7 +59,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(MesquiteReference{"tire.vtk", 0.1637, 0.8109, 0},
                       MesquiteReference{"flat-tet-sphere.vtk", 0.2851, 0.8450, 0},
                       MesquiteReference{"cub_fru.vtk", 0.1973, 0.4310, 0},
-                      MesquiteReference{"mixed-hex-pyr-tet.vtk", 0.3707, 0.7883, 3}),
+                      MesquiteReference{"mixed-hex-pyr-tet.vtk", 0.3707, 0.7883, 3},
+                      MesquiteReference{"cub_wedge_like.vtk", 0.4894, 0.8979, 0},
+                      MesquiteReference{"../su2/knowles-mixed-beam.vtk", 0.8936, 0.9582, 0}),
     [](const auto& info) {
       std::string name = info.param.file;
       for (char& c : name) {
