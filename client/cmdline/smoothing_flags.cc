@@ -17,6 +17,7 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
     params.sequential_max_iterations = *flags.max_iterations;
     params.laplace_max_iterations = *flags.max_iterations;
     params.polish_max_sweeps = *flags.max_iterations;
+    params.polish_worst_max_sweeps = *flags.max_iterations;
   }
   return params;
 }

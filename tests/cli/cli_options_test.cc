@@ -51,6 +51,7 @@ TEST(CliOptions, NoPolishAndMaxIterationsReachThePolish) {
   ASSERT_TRUE(options.ok()) << options.status();
   EXPECT_TRUE(ToSmoothingParams(*options).polish);
   EXPECT_EQ(ToSmoothingParams(*options).polish_max_sweeps, 3);
+  EXPECT_EQ(ToSmoothingParams(*options).polish_worst_max_sweeps, 3);
 }
 
 }  // namespace

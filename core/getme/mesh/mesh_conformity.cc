@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <utility>
@@ -35,12 +36,23 @@ std::array<NodeId, 8> SortedNodes(const Mesh& mesh, ElementId element) {
 
 absl::Status CheckNoRepeatedElements(const Mesh& mesh) {
   // A repeat shares every node with the original, so it is among the elements of the original's
-  // smallest node: no table of all elements' node sets is needed.
+  // smallest node: no table of all elements' node sets is needed. The sum of an element's node
+  // ids is the same for any order of its nodes, so comparing sums first leaves the sorting to the
+  // rare candidates that could be repeats (sorting every neighbour of every element cost a
+  // quarter of reading a 112k-tetrahedron file).
+  std::vector<std::int64_t> node_sum(static_cast<std::size_t>(mesh.element_count()));
   for (ElementId element = 0; element < mesh.element_count(); ++element) {
-    const std::array<NodeId, 8> nodes = SortedNodes(mesh, element);
-    for (const ElementId other : mesh.node_elements(nodes[0])) {
+    std::int64_t sum = 0;
+    for (const NodeId node : mesh.element_nodes(element)) sum += node;
+    node_sum[element] = sum;
+  }
+  for (ElementId element = 0; element < mesh.element_count(); ++element) {
+    const std::span<const NodeId> element_nodes = mesh.element_nodes(element);
+    const NodeId smallest = *std::min_element(element_nodes.begin(), element_nodes.end());
+    for (const ElementId other : mesh.node_elements(smallest)) {
       if (other >= element || mesh.type(other) != mesh.type(element)) continue;
-      if (SortedNodes(mesh, other) == nodes) {
+      if (node_sum[other] != node_sum[element]) continue;
+      if (SortedNodes(mesh, other) == SortedNodes(mesh, element)) {
         return absl::InvalidArgumentError(
             absl::StrCat("element ", Named(mesh, element), " repeats element ", other,
                          ": both use the nodes {", absl::StrJoin(mesh.element_nodes(other), ", "),
