@@ -11,12 +11,13 @@ import subprocess
 import sys
 import tempfile
 
-MESQUITE = {  # ../shared/meshes/README.md: Mesquite 2.99 q_min / q_mean after, seconds
-    "tire.vtk": (0.1637, 0.8109, 0.07),
-    "flat-tet-sphere.vtk": (0.2851, 0.8450, 0.20),
-    "cub_fru.vtk": (0.1973, 0.4310, 1.84),
-    "mixed-hex-pyr-tet.vtk": (0.3707, 0.7883, 0.05),
-}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from end_to_end import mesquite_reference  # noqa: E402  (Mesquite's figures, from the README)
+
+# Meshes with a Mesquite figure, by path below the shared directory.
+MESQUITE_MESHES = ["mesquite/tire.vtk", "mesquite/flat-tet-sphere.vtk", "mesquite/cub_fru.vtk",
+                   "mesquite/mixed-hex-pyr-tet.vtk", "mesquite/cub_wedge_like.vtk",
+                   "su2/knowles-mixed-beam.vtk"]
 METHODS = ["smart-laplace", "laplace", "simultaneous", "sequential", "getme", "warpage"]
 
 
@@ -54,23 +55,27 @@ def main():
     getme = os.path.join(args.build, "bin", "getme")
     meshgen = os.path.join(args.build, "bin", "getme-meshgen")
     mesquite = os.path.join(args.shared, "mesquite")
+    reference = mesquite_reference(args.shared)
     with tempfile.TemporaryDirectory() as workdir:
         print("### Shared Mesquite meshes against Mesquite's feasible Newton\n")
         print(HEADER)
-        for name, (q_min, q_mean, seconds) in MESQUITE.items():
+        for relative in MESQUITE_MESHES:
+            name = os.path.basename(relative)
+            path = os.path.join(args.shared, relative)
+            q_min, q_mean, seconds = reference[name]
             print(f"| {name} | Mesquite 2.99 (README) | | | {q_min:.4f} / {q_mean:.4f} | | "
                   f"{seconds:.2f} | 1 |")
             for method in METHODS:
-                _, result = smooth(getme, os.path.join(mesquite, name), ["--method", method],
-                                   args.threads, workdir)
+                _, result = smooth(getme, path, ["--method", method], args.threads, workdir)
                 print(row(name, method, result))
-            _, result = smooth(getme, os.path.join(mesquite, name), ["--literal"], args.threads,
-                               workdir)
-            print(row(name, "getme --literal", result))
+            for flag in ("--no-polish", "--literal"):
+                _, result = smooth(getme, path, [flag], args.threads, workdir)
+                print(row(name, "getme " + flag, result))
         print("\n### Other shared meshes\n")
         print(HEADER)
-        for name in ("tet_4_tangled.vtk", "hex_5_tangled.vtk", "1000hex-block-internal-bias.vtk",
-                     "cube-clip-5.vtk", "large_box_hex_1000.vtk", "small_box_hex_1000.vtk"):
+        for name in ("tet_4_tangled.vtk", "hex_5_tangled.vtk", "pave3.vtk", "pave_cyl.vtk",
+                     "1000hex-block-internal-bias.vtk", "cube-clip-5.vtk",
+                     "large_box_hex_1000.vtk", "small_box_hex_1000.vtk"):
             _, result = smooth(getme, os.path.join(mesquite, name), [], args.threads, workdir)
             print(row(name, "getme", result))
 
@@ -91,8 +96,19 @@ def main():
                              ("getme", []), ("getme --literal", ["--literal"])):
             _, result = smooth(getme, vessel, ["--free-boundary"] + extra, args.threads, workdir)
             print(row("vessel, wall fixed, caps free", label, result))
-        _, result = smooth(getme, pinned, [], args.threads, workdir)
-        print(row("vessel, whole boundary fixed", "getme", result))
+        for label, extra in (("getme", []), ("getme --no-polish", ["--no-polish"])):
+            _, result = smooth(getme, pinned, extra, args.threads, workdir)
+            print(row("vessel, whole boundary fixed", label, result))
+        # The artery (curved, tapered, two branches, 6 inward + 2 outward layers, growth 1.2,
+        # first layer 0.5 % of the wall edge), whole boundary fixed: issue 14's thin-layer case.
+        for label, options in (("artery S, sharp junctions", ["--mesh-size", "0.5",
+                                                              "--junction-fillet", "0"]),
+                               ("artery M, rounded junctions", [])):
+            artery = os.path.join(workdir, "artery.vtk")
+            subprocess.run([meshgen, "artery", artery] + options, check=True, capture_output=True)
+            for method, extra in (("getme", []), ("getme --no-polish", ["--no-polish"])):
+                _, result = smooth(getme, artery, extra, args.threads, workdir)
+                print(row(label + ", whole boundary fixed", method, result))
 
 
 if __name__ == "__main__":

@@ -167,6 +167,15 @@ TEST(PolishTest, ParametersAreValidated) {
   params.simultaneous_handoff_window = -1;
   EXPECT_NE(params.Validate().message().find("simultaneous_handoff_window"), std::string::npos);
   params = SmoothingParams();
+  params.polish_worst_exponent = 40.0;
+  EXPECT_NE(params.Validate().message().find("polish_worst_exponent"), std::string::npos);
+  params = SmoothingParams();
+  params.polish_over_relaxation = 2.0;
+  EXPECT_NE(params.Validate().message().find("polish_over_relaxation"), std::string::npos);
+  params = SmoothingParams();
+  params.sequential_handoff_window = -1;
+  EXPECT_NE(params.Validate().message().find("sequential_handoff_window"), std::string::npos);
+  params = SmoothingParams();
   params.simultaneous_handoff_gain = -1.0;
   EXPECT_NE(params.Validate().message().find("simultaneous_handoff_gain"), std::string::npos);
   params = SmoothingParams();

@@ -81,6 +81,11 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   params.polish_backtracking_steps = 6;
   params.simultaneous_handoff_window = 9;
   params.simultaneous_handoff_gain = 5e-5;
+  params.sequential_handoff_window = 1234;
+  params.polish_over_relaxation = 1.5;
+  params.polish_worst_exponent = 4.0;
+  params.polish_worst_tolerance = 2e-3;
+  params.polish_worst_max_sweeps = 9;
   const v1::SmoothingParameters wire = ToWireParameters(params);
   EXPECT_FALSE(wire.has_polish());  // on is the default: not sent
   EXPECT_EQ(wire.polish_max_sweeps(), 17);
@@ -93,6 +98,11 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   EXPECT_EQ(back->polish_backtracking_steps, 6);
   EXPECT_EQ(back->simultaneous_handoff_window, 9);
   EXPECT_EQ(back->simultaneous_handoff_gain, 5e-5);
+  EXPECT_EQ(back->sequential_handoff_window, 1234);
+  EXPECT_EQ(back->polish_over_relaxation, 1.5);
+  EXPECT_EQ(back->polish_worst_exponent, 4.0);
+  EXPECT_EQ(back->polish_worst_tolerance, 2e-3);
+  EXPECT_EQ(back->polish_worst_max_sweeps, 9);
 
   params = SmoothingParams();
   params.untangle_free_boundary = true;

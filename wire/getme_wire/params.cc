@@ -107,6 +107,19 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
   if (wire.has_untangle_free_boundary()) {
     params.untangle_free_boundary = wire.untangle_free_boundary();
   }
+  if (wire.has_sequential_handoff_window()) {
+    params.sequential_handoff_window = wire.sequential_handoff_window();
+  }
+  if (wire.has_polish_over_relaxation()) {
+    params.polish_over_relaxation = wire.polish_over_relaxation();
+  }
+  if (wire.has_polish_worst_exponent()) params.polish_worst_exponent = wire.polish_worst_exponent();
+  if (wire.has_polish_worst_tolerance()) {
+    params.polish_worst_tolerance = wire.polish_worst_tolerance();
+  }
+  if (wire.has_polish_worst_max_sweeps()) {
+    params.polish_worst_max_sweeps = wire.polish_worst_max_sweeps();
+  }
   if (wire.has_polish()) params.polish = wire.polish();
   if (wire.has_polish_tolerance()) params.polish_tolerance = wire.polish_tolerance();
   if (wire.has_polish_max_sweeps()) params.polish_max_sweeps = wire.polish_max_sweeps();
@@ -177,6 +190,11 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.threads, defaults.threads, [&](int v) { wire.set_threads(v); });
   SetIfChanged(params.untangle_free_boundary, defaults.untangle_free_boundary, [&](bool v) { wire.set_untangle_free_boundary(v); });
   SetIfChanged(params.polish, defaults.polish, [&](bool v) { wire.set_polish(v); });
+  SetIfChanged(params.sequential_handoff_window, defaults.sequential_handoff_window, [&](std::int64_t v) { wire.set_sequential_handoff_window(v); });
+  SetIfChanged(params.polish_over_relaxation, defaults.polish_over_relaxation, [&](double v) { wire.set_polish_over_relaxation(v); });
+  SetIfChanged(params.polish_worst_exponent, defaults.polish_worst_exponent, [&](double v) { wire.set_polish_worst_exponent(v); });
+  SetIfChanged(params.polish_worst_tolerance, defaults.polish_worst_tolerance, [&](double v) { wire.set_polish_worst_tolerance(v); });
+  SetIfChanged(params.polish_worst_max_sweeps, defaults.polish_worst_max_sweeps, [&](std::int64_t v) { wire.set_polish_worst_max_sweeps(v); });
   SetIfChanged(params.polish_tolerance, defaults.polish_tolerance, [&](double v) { wire.set_polish_tolerance(v); });
   SetIfChanged(params.polish_max_sweeps, defaults.polish_max_sweeps, [&](std::int64_t v) { wire.set_polish_max_sweeps(v); });
   SetIfChanged(params.polish_node_tolerance, defaults.polish_node_tolerance, [&](double v) { wire.set_polish_node_tolerance(v); });

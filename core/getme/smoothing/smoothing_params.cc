@@ -128,6 +128,10 @@ absl::Status SmoothingParams::Validate() const {
   if (sequential_backtracking_steps < 0 || sequential_backtracking_steps > 30) {
     return OutOfRange("sequential_backtracking_steps", sequential_backtracking_steps, "in [0, 30]");
   }
+  // c(E)^p must stay finite: c reaches 10⁶ on nearly flat elements, and (10⁶)^32 = 10^192 fits.
+  if (!(polish_worst_exponent <= 32.0)) {
+    return OutOfRange("polish_worst_exponent", polish_worst_exponent, "in [0, 32]");
+  }
   if (!(polish_over_relaxation >= 1.0 && polish_over_relaxation < 2.0)) {
     return OutOfRange("polish_over_relaxation", polish_over_relaxation, "in [1, 2)");
   }
