@@ -1,8 +1,8 @@
 // The polish stage (core/getme/smoothing/polish.h, issue 14 item 1), through Smooth(): on random
 // valid meshes it never lowers q_min below what GETMe handed it, never inverts an element, leaves
 // fixed nodes where they are, raises q_mean on distorted meshes, and gives bit-identical
-// coordinates for every thread count. With polish off (the default) the method is unchanged: the
-// other smoothing tests cover that.
+// coordinates for every thread count. With the polish off (--no-polish, --literal, the other
+// methods) the paper's algorithms run unchanged: the other smoothing tests cover that.
 
 #include <gtest/gtest.h>
 
@@ -160,33 +160,30 @@ TEST(PolishTest, ParametersAreValidated) {
   EXPECT_TRUE(params.polish);  // on by default for Method::kGetme (issue 14)
   params.UseLiteralPaperAlgorithm();
   EXPECT_FALSE(params.polish);  // not part of the paper
+
+  // Each out-of-range value is refused with its field's name.
+  struct BadValue {
+    const char* field;
+    std::function<void(SmoothingParams&)> set;
+  };
+  const std::vector<BadValue> bad = {
+      {"polish_node_tolerance", [](SmoothingParams& p) { p.polish_node_tolerance = -1.0; }},
+      {"simultaneous_handoff_window",
+       [](SmoothingParams& p) { p.simultaneous_handoff_window = -1; }},
+      {"polish_worst_exponent", [](SmoothingParams& p) { p.polish_worst_exponent = 40.0; }},
+      {"polish_over_relaxation", [](SmoothingParams& p) { p.polish_over_relaxation = 2.0; }},
+      {"sequential_handoff_window", [](SmoothingParams& p) { p.sequential_handoff_window = -1; }},
+      {"simultaneous_handoff_gain", [](SmoothingParams& p) { p.simultaneous_handoff_gain = -1.0; }},
+      {"polish_tolerance", [](SmoothingParams& p) { p.polish_tolerance = -1.0; }},
+      {"polish_max_sweeps", [](SmoothingParams& p) { p.polish_max_sweeps = -1; }},
+      {"polish_backtracking_steps", [](SmoothingParams& p) { p.polish_backtracking_steps = 31; }},
+  };
+  for (const BadValue& value : bad) {
+    SmoothingParams changed;
+    value.set(changed);
+    EXPECT_NE(changed.Validate().message().find(value.field), std::string::npos) << value.field;
+  }
   params = SmoothingParams();
-  params.polish_node_tolerance = -1.0;
-  EXPECT_NE(params.Validate().message().find("polish_node_tolerance"), std::string::npos);
-  params = SmoothingParams();
-  params.simultaneous_handoff_window = -1;
-  EXPECT_NE(params.Validate().message().find("simultaneous_handoff_window"), std::string::npos);
-  params = SmoothingParams();
-  params.polish_worst_exponent = 40.0;
-  EXPECT_NE(params.Validate().message().find("polish_worst_exponent"), std::string::npos);
-  params = SmoothingParams();
-  params.polish_over_relaxation = 2.0;
-  EXPECT_NE(params.Validate().message().find("polish_over_relaxation"), std::string::npos);
-  params = SmoothingParams();
-  params.sequential_handoff_window = -1;
-  EXPECT_NE(params.Validate().message().find("sequential_handoff_window"), std::string::npos);
-  params = SmoothingParams();
-  params.simultaneous_handoff_gain = -1.0;
-  EXPECT_NE(params.Validate().message().find("simultaneous_handoff_gain"), std::string::npos);
-  params = SmoothingParams();
-  params.polish_tolerance = -1.0;
-  EXPECT_NE(params.Validate().message().find("polish_tolerance"), std::string::npos);
-  params = SmoothingParams();
-  params.polish_max_sweeps = -1;
-  EXPECT_NE(params.Validate().message().find("polish_max_sweeps"), std::string::npos);
-  params = SmoothingParams();
-  params.polish_backtracking_steps = 31;
-  EXPECT_NE(params.Validate().message().find("polish_backtracking_steps"), std::string::npos);
   params.polish_backtracking_steps = 0;
   EXPECT_TRUE(params.Validate().ok());
 }

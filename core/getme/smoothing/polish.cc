@@ -90,8 +90,7 @@ Powers PowersOf(double cost, double exponent) {
     const double p_less1 = p_less2 * cost;
     return {p_less1 * cost, p_less1, p_less2};
   }
-  return {std::pow(cost, exponent), std::pow(cost, exponent - 1.0),
-          std::pow(cost, exponent - 2.0)};
+  return {std::pow(cost, exponent), std::pow(cost, exponent - 1.0), std::pow(cost, exponent - 2.0)};
 }
 
 double Powered(double cost, double exponent) {
@@ -102,8 +101,8 @@ double Powered(double cost, double exponent) {
 // in the fixed order of its node_elements row. With p ≠ 1 by the chain rule:
 // ∇c^p = p c^{p−1} ∇c, ∇²c^p = p c^{p−1} ∇²c + p (p − 1) c^{p−2} ∇c ∇cᵀ (positive semi-definite
 // where ∇²c is, for p ≥ 1). False if an element is already past the barrier.
-bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cost,
-                     Vec3& gradient, Eigen::Matrix3d& hessian) {
+bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cost, Vec3& gradient,
+                     Eigen::Matrix3d& hessian) {
   cost = 0.0;
   gradient.setZero();
   hessian.setZero();

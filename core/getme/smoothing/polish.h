@@ -9,18 +9,23 @@ namespace getme {
 
 // The polish stage of issue 14 (item 1), beyond the paper: GETMe's fixed point is not the
 // optimum of q_mean (the paper's own tables show GETMe ~0.01 below Mesquite's q_mean), so after
-// it each free node (context.movable) takes damped Newton steps on the summed inverse mean ratio
-// cost of its elements (mean_ratio_derivatives.h: convex in one node where the elements are
-// valid, +∞ past Def. 2's barrier). A step is kept only if the node's cost falls, none of its
-// elements becomes invalid and the smallest mean ratio of its elements does not drop, so the
-// mesh's q_min never falls and nothing inverts.
+// it each free node (context.movable) takes over-relaxed, damped Newton steps on the costs of its
+// elements (c(E), mean_ratio_derivatives.h: convex in one node where the elements are valid, +∞
+// past Def. 2's barrier). A step is kept only if the node's cost falls and none of its elements
+// becomes invalid. Two stages, each handing on its best state:
+//   1. worst elements: cost Σ c(E)^p, p = params.polish_worst_exponent, no q_min floor while it
+//      runs, the best-q_min state handed on (skipped for p ≤ 1);
+//   2. mean: cost Σ c(E), no element below the q_min the stage began with, the best-q_mean state
+//      handed on.
+// So the mesh's q_min never falls below the polish's input and nothing inverts.
 //
 // Nodes are swept one colour of a node colouring (node_colouring.h) at a time: nodes of one
 // colour share no element, so they move in parallel and any thread count gives the same bits.
-// Sweeps stop when the q_mean still to gain, extrapolated from the last two sweeps' gains, is
-// below params.polish_tolerance, when a sweep gains nothing, or after params.polish_max_sweeps.
-// One progress event per sweep (Phase::kPolish; reverted_nodes = free nodes whose step was
-// refused). Keeps context.quality up to date. Cancelled between colours, with the mesh valid.
+// A stage stops after two sweeps without a new best, when no node moved, when the gain still to
+// come (extrapolated from the last two sweeps' gains) is below its tolerance, or at its sweep cap
+// (docs/quality.md#polish). One progress event per sweep of either stage (Phase::kPolish,
+// numbered on; reverted_nodes = nodes whose step was refused). Keeps context.quality up to date.
+// Cancelled between colours, with the mesh left in the best state so far (valid).
 absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context);
 
 }  // namespace getme

@@ -195,9 +195,8 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   const std::int64_t elements = mesh_.element_count();
   const bool sliding = stop_ == SequentialStop::kHandOnToPolish;
   const std::int64_t window =
-      sliding ? (params_.sequential_handoff_window > 0
-                     ? params_.sequential_handoff_window
-                     : std::max<std::int64_t>(1000, elements / 4))
+      sliding ? (params_.sequential_handoff_window > 0 ? params_.sequential_handoff_window
+                                                       : std::max<std::int64_t>(1000, elements / 4))
               : (params_.sequential_stall_iterations > 0 ? params_.sequential_stall_iterations
                                                          : std::max<std::int64_t>(1000, elements));
   const std::int64_t cap =
@@ -269,8 +268,8 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
 
 }  // namespace
 
-absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context,
-                                           SelectionCriterion criterion, SequentialStop stop) {
+absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion,
+                                           SequentialStop stop) {
   return SequentialSubstep(context, criterion, stop).Run();
 }
 
