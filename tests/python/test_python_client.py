@@ -213,6 +213,16 @@ class SmoothMeshio(unittest.TestCase):
         self.assertLessEqual(report.phases[0].iterations, 3)
         self.assertEqual(report.threads, 2)
 
+    def test_max_iterations_caps_both_polish_stages_as_the_cli_does(self):
+        mesh = meshio.read(mesh_path("surface.vtk"))
+        smoothed, report = getme.smooth(mesh, SERVER.address, max_iterations=2)
+        reference, cli = cli_smooth("surface.vtk", "--max-iterations", "2")
+        self.assertTrue(np.array_equal(smoothed.points, reference.points))
+        self.assertEqual(report.iterations["polish"], cli["iterations_polish"])
+        # Two stages (worst elements, then the mean), each capped at 2 sweeps.
+        self.assertLessEqual(report.iterations["polish"], 4)
+        self.assertGreaterEqual(report.iterations["polish"], 1)
+
 
 class SmoothNumpy(unittest.TestCase):
     def test_tuple_in_tuple_out_matching_the_cli(self):

@@ -11,9 +11,11 @@ from google.protobuf.descriptor import FieldDescriptor
 from getme._stubs import params_pb2
 from getme._wire import ITERATION_COUNTERS, PER_TYPE_KEYS, is_method, method_names, method_value
 
-# The CLI's --max-iterations: one cap for every phase (client/cli/cli_options.cc), i.e. every
-# max_iterations_field of _wire.ITERATION_COUNTERS.
+# The CLI's --max-iterations: one cap for every phase (client/cmdline/smoothing_flags.cc), i.e.
+# every max_iterations_field of _wire.ITERATION_COUNTERS and the polish's worst-element stage,
+# which the result counts with the polish's sweeps.
 MAX_ITERATIONS = "max_iterations"
+_ALSO_CAPPED = ("polish_worst_max_sweeps",)
 
 _FIELDS = {f.name: f for f in params_pb2.SmoothingParameters.DESCRIPTOR.fields}
 
@@ -85,7 +87,8 @@ def to_proto(params: Dict[str, Any]):
     values = dict(params)
     cap = values.pop(MAX_ITERATIONS, None)
     if cap is not None:
-        for name in (counter.max_iterations_field for counter in ITERATION_COUNTERS):
+        capped = [counter.max_iterations_field for counter in ITERATION_COUNTERS]
+        for name in capped + list(_ALSO_CAPPED):
             if values.get(name) is None:
                 values[name] = cap
     for name, value in values.items():

@@ -2,7 +2,7 @@
 
 Element types are named as meshio names them ("tetra", "hexahedron", "wedge", "pyramid"), phases
 by the lower-case name of getme.v1.Phase without its prefix ("untangle", "simultaneous",
-"sequential", "warpage", "smart_laplace", "laplace"); both mappings are _wire's.
+"sequential", "warpage", "smart_laplace", "laplace", "polish"); both mappings are _wire's.
 """
 
 from __future__ import annotations
@@ -77,7 +77,8 @@ class SmoothReport:
 
     before, after: QualityReport of the input and of the smoothed mesh; q_min, q_mean,
     invalid_elements and histogram are the after values. phases: PhaseSummary per phase run, in
-    order. iterations: per phase name ("untangle", "simultaneous", "sequential", "laplace").
+    order. iterations: per phase name ("untangle", "simultaneous", "sequential", "laplace",
+    "polish": sweeps).
     seconds: smoothing time on the server, without queueing and transfer. threads: the engine
     threads the job used.
     """
