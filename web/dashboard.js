@@ -407,6 +407,11 @@ async function submitDemo(event) {
       sequentialMaxIterations: String(form.get('sequential')),
       sequentialStallIterations: String(form.get('sequential')),
       sequentialImprovementTolerance: 0,
+      // With the polish on, the substeps would hand on early (quality.md#stop-rules): the demo
+      // runs every iteration asked for, so the windows are those of the fields above.
+      polish: form.get('polish') === 'on',
+      simultaneousHandoffWindow: '0',
+      sequentialHandoffWindow: String(form.get('sequential')),
     },
     mesh: demoMesh(cells),
   };

@@ -102,8 +102,8 @@ try {
     `${beforeBars} before, ${bars} after bins`);
   await page.waitForFunction(() => document.getElementById('job-state').textContent === 'SUCCEEDED');
   const phases = await page.$$eval('#chart rect.phase', (rects) => rects.map((r) => r.dataset.phase));
-  check('both phases are marked', phases.includes('PHASE_SIMULTANEOUS') &&
-    phases.includes('PHASE_SEQUENTIAL'), phases.join(', '));
+  check('every phase is marked', phases.includes('PHASE_SIMULTANEOUS') &&
+    phases.includes('PHASE_SEQUENTIAL') && phases.includes('PHASE_POLISH'), phases.join(', '));
   await page.screenshot({ path: path.join(outputDir, 'dashboard-succeeded.png'), fullPage: true });
 
   // 2. A job that would run for minutes: cancel it from the page.
