@@ -11,7 +11,7 @@
 namespace getme {
 
 enum class Method {
-  kGetme,         // simultaneous, then sequential (Sec. 3.3) — the default
+  kGetme,         // simultaneous, sequential (Sec. 3.3), then the polish — the default
   kSimultaneous,  // Sec. 3.1 only
   kSequential,    // Sec. 3.2 only
   kWarpage,       // GETMe, then the sequential substep selecting by q_γ (Sec. 4.4)
