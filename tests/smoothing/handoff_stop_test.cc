@@ -1,0 +1,116 @@
+// The stop rules the substeps use when the polish follows (issue 14, item 2;
+// simultaneous_smoother.h, sequential_smoother.h), re-computed from the progress events: each
+// substep must stop exactly where its rule says, not earlier and not later. With the polish off
+// the paper's rule alone applies and runs longer.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "getme/meshgen/hybrid_block.h"
+#include "getme/smoothing/smoother.h"
+
+namespace getme {
+namespace {
+
+Mesh TestMesh() {
+  auto mesh = meshgen::HybridBlock(8, 8, 6, 0.3, 31);
+  EXPECT_TRUE(mesh.ok()) << mesh.status();
+  return std::move(*mesh);
+}
+
+struct RecordedRun {
+  SmoothingResult result;
+  std::vector<ProgressEvent> events;  // without the phase-done events
+
+  std::vector<ProgressEvent> Of(Phase phase) const {
+    std::vector<ProgressEvent> selected;
+    for (const ProgressEvent& event : events) {
+      if (event.phase == phase) selected.push_back(event);
+    }
+    return selected;
+  }
+};
+
+RecordedRun SmoothRecording(const SmoothingParams& params) {
+  Mesh mesh = TestMesh();
+  RecordedRun run;
+  auto result = Smooth(mesh, params, [&](const ProgressEvent& event) {
+    if (!event.phase_done) run.events.push_back(event);
+  });
+  EXPECT_TRUE(result.ok()) << result.status();
+  if (result.ok()) run.result = *result;
+  return run;
+}
+
+TEST(HandOnStopTest, SimultaneousStopsAtTheFirstIterationWhoseWindowGainIsTooSmall) {
+  SmoothingParams params;
+  params.threads = 2;
+  ASSERT_TRUE(params.polish);
+  const RecordedRun run = SmoothRecording(params);
+  const std::vector<ProgressEvent> simultaneous = run.Of(Phase::kSimultaneous);
+  const auto n = static_cast<std::int64_t>(simultaneous.size());
+  ASSERT_EQ(n, run.result.iterations_simultaneous);
+  const std::int64_t window = params.simultaneous_handoff_window;
+  ASSERT_GT(n, window);  // the windows below are all inside the events
+  // q_mean after iteration k is simultaneous[k - 1].q_mean.
+  auto stops_at = [&](std::int64_t k) {
+    const double q = simultaneous[k - 1].q_mean;
+    const bool settled = std::abs(q - simultaneous[k - 2].q_mean) < params.simultaneous_tolerance;
+    const bool handed_on =
+        k > window && q - simultaneous[k - 1 - window].q_mean <
+                          params.simultaneous_handoff_gain * static_cast<double>(window);
+    return settled || handed_on;
+  };
+  for (std::int64_t k = 2; k < n; ++k) EXPECT_FALSE(stops_at(k)) << "iteration " << k;
+  EXPECT_TRUE(stops_at(n));
+
+  // The paper's rule alone (no polish) runs on past that point.
+  params.polish = false;
+  const RecordedRun paper = SmoothRecording(params);
+  EXPECT_GT(paper.result.iterations_simultaneous, n);
+}
+
+TEST(HandOnStopTest, SequentialStopsOneWindowAfterTheLastRiseOfTheBestMinimum) {
+  SmoothingParams params;
+  params.threads = 2;
+  params.sequential_cycle = 1;  // an event per pick, with the mesh's q_min after it
+  params.sequential_handoff_window = 300;
+  const RecordedRun run = SmoothRecording(params);
+  const std::vector<ProgressEvent> sequential = run.Of(Phase::kSequential);
+  ASSERT_EQ(static_cast<std::int64_t>(sequential.size()), run.result.iterations_sequential);
+  ASSERT_GE(run.result.phases.size(), 2u);
+
+  // The rule, independently: the best q_min so far (from the state the simultaneous substep
+  // handed on) must rise by the tolerance within every window of picks.
+  double best = run.result.phases[0].q_min;
+  double risen = best;
+  std::int64_t risen_pick = 0;
+  std::int64_t expected_stop = -1;
+  for (std::int64_t pick = 1; pick <= static_cast<std::int64_t>(sequential.size()); ++pick) {
+    best = std::max(best, sequential[pick - 1].q_min);
+    if (best - risen >= params.sequential_improvement_tolerance) {
+      risen = best;
+      risen_pick = pick;
+    }
+    if (pick - risen_pick >= params.sequential_handoff_window) {
+      expected_stop = pick;
+      break;
+    }
+  }
+  EXPECT_EQ(run.result.iterations_sequential, expected_stop);
+  EXPECT_GT(risen_pick, 0);  // q_min did rise: the window was not trivially the first one
+  // The state handed on is the best one seen.
+  EXPECT_EQ(run.result.phases[1].q_min, best);
+
+  // Without the polish the windows are mesh-sized and taken one after another: more picks.
+  params.polish = false;
+  params.sequential_cycle = 1000;
+  const RecordedRun paper = SmoothRecording(params);
+  EXPECT_GT(paper.result.iterations_sequential, run.result.iterations_sequential);
+}
+
+}  // namespace
+}  // namespace getme
