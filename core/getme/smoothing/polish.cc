@@ -39,9 +39,8 @@ int LocalIndex(std::span<const NodeId> nodes, NodeId node) {
 // The per-element qualities one node step writes before it is accepted. Nodes of one colour share
 // no element, so their writes never meet: no allocation per node.
 struct PolishState {
-  explicit PolishState(std::int64_t nodes) : stale(static_cast<std::size_t>(nodes)) {
-    for (auto& flag : stale) flag.store(1, std::memory_order_relaxed);
-  }
+  // Every stage starts by marking all nodes stale (RunStage).
+  explicit PolishState(std::int64_t nodes) : stale(static_cast<std::size_t>(nodes)) {}
 
   // The stage's cost per element is c(E)^exponent (mean_ratio_derivatives.h for c): 1 for the
   // mean stage, larger for the worst-element stage, where it weights the worst elements most.
