@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "getme/elements/cube_root.h"
 #include "getme/elements/element_tables.h"
 #include "getme/elements/lanes.h"
 #include "getme/elements/vec3.h"
@@ -57,7 +58,7 @@ inline S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
     const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
     const S det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
     const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
-    sum += 3.0 * Cbrt(det_s * det_s) / frobenius2;
+    sum += 3.0 * CubeRoot(det_s * det_s) / frobenius2;
   }
   const S q = sum / static_cast<double>(Table::kNodeTets.size());
   // std::clamp(q, 0, 1), lane by lane.

@@ -3,9 +3,10 @@
 // The element kernels of transform.h and element_quality.h are written once over a lane type S:
 // double (one element: the API the smoothers and tests call) or Lanes (kLanes elements side by
 // side, for the simultaneous substep's passes over the whole mesh). Only operations that IEEE 754
-// rounds exactly (+ − × ÷ √, comparisons) act on whole lanes; cbrt and pow go through libm lane
-// by lane. So each lane holds exactly the bits the double instantiation gives for its element,
-// and a mesh smooths to the same coordinates whichever path evaluated an element.
+// rounds exactly (+ − × ÷ √, comparisons, bit operations) act on whole lanes — the cube root is
+// built from them (cube_root.h) — and pow goes through libm lane by lane. So each lane holds
+// exactly the bits the double instantiation gives for its element, and a mesh smooths to the same
+// coordinates whichever path evaluated an element.
 
 #include <cmath>
 #include <cstdint>
@@ -34,13 +35,6 @@ inline double Sqrt(double x) { return std::sqrt(x); }
 inline Lanes Sqrt(Lanes x) {
   Lanes root;
   for (int l = 0; l < kLanes; ++l) root[l] = std::sqrt(x[l]);  // one sqrtpd
-  return root;
-}
-
-inline double Cbrt(double x) { return std::cbrt(x); }
-inline Lanes Cbrt(Lanes x) {
-  Lanes root;
-  for (int l = 0; l < kLanes; ++l) root[l] = std::cbrt(x[l]);
   return root;
 }
 

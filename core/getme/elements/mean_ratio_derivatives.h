@@ -44,6 +44,7 @@
 #include <cmath>
 #include <limits>
 
+#include "getme/elements/cube_root.h"
 #include "getme/elements/element_quality.h"
 #include "getme/elements/element_tables.h"
 #include "getme/elements/vec3.h"
@@ -101,7 +102,7 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
     const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
     const double det_s = det_d * kDetWInverse;
     const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
-    const double a = 1.0 / (3.0 * std::cbrt(det_s * det_s));
+    const double a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
     sum += frobenius2 * a;
     if constexpr (kOrder >= 1) {
       int m = -1;
@@ -176,7 +177,7 @@ inline InverseMeanRatioCostAndQuality CostAndQuality(const ElementNodes<kType>& 
     const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
     const double det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
     const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
-    const double root = std::cbrt(det_s * det_s);
+    const double root = CubeRoot(det_s * det_s);
     cost += frobenius2 * (1.0 / (3.0 * root));
     quality += 3.0 * root / frobenius2;
   }

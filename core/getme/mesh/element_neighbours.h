@@ -16,8 +16,10 @@ namespace getme {
 // pick, which then evaluates every one of them.
 class ElementNeighbourFinder {
  public:
-  // Valid until the next call.
-  std::span<const ElementId> Find(const Mesh& mesh, ElementId element);
+  // Valid until the next call. With `through` non-empty (one flag per node), only the elements
+  // sharing a node flagged in it: a step that moves only those nodes changes no other element.
+  std::span<const ElementId> Find(const Mesh& mesh, ElementId element,
+                                  std::span<const std::uint8_t> through = {});
 
  private:
   std::vector<std::int32_t> ranks_;  // canonical ranks, one sorted row per node of the element

@@ -34,13 +34,17 @@ class SequentialSubstep {
         criterion_value_(mesh_.element_count()),
         selection_(mesh_.element_count()),
         quality_min_(mesh_.element_count()),
-        criterion_min_(mesh_.element_count()) {}
+        criterion_min_(criterion == SelectionCriterion::kMeanRatio ? 0 : mesh_.element_count()) {}
 
   absl::StatusOr<PhaseSummary> Run();
 
  private:
   double Criterion(ElementId element, double quality) const;
   bool HasMovableNode(ElementId element) const;
+  double CriterionMinimum() const {
+    return criterion_ == SelectionCriterion::kMeanRatio ? quality_min_.top_key()
+                                                        : criterion_min_.top_key();
+  }
   // One pick of Steps 1–3; returns the number of nodes reverted (0 when it was applied).
   std::int64_t TransformWorst();
   void RestoreBest();
@@ -56,8 +60,10 @@ class SequentialSubstep {
   // Keyed by criterion + π over elements with a movable node; items are canonical ranks, so ties
   // break in the canonical order (Mesh::canonical_order).
   IndexedMinHeap selection_;
-  IndexedMinHeap quality_min_;    // keyed by q, every element: the mesh's q_min
-  IndexedMinHeap criterion_min_;  // keyed by the criterion, every element
+  IndexedMinHeap quality_min_;  // keyed by q, every element: the mesh's q_min
+  // Keyed by the criterion, every element; left empty for the mean-ratio criterion, whose key is
+  // quality_min_'s (a valid element's q ≥ 0), so CriterionMinimum reads that heap instead.
+  IndexedMinHeap criterion_min_;
   double quality_sum_ = 0.0;
   ElementId last_pick_ = -1;
   ElementId blocker_ = -1;  // a neighbour that a reverted step would have inverted
@@ -118,9 +124,11 @@ std::int64_t SequentialSubstep::TransformWorst() {
   });
 
   // Step 3.1: the element and its neighbours must stay valid. With backtracking (a safeguard,
-  // docs/quality.md) a step that would invert a neighbour is retried at half the length.
+  // docs/quality.md) a step that would invert a neighbour is retried at half the length. Only the
+  // neighbours through a movable node change: the others keep their quality (and validity), so
+  // they are not evaluated.
   affected_.assign(1, pick);
-  const auto neighbours = neighbour_finder_.Find(mesh_, pick);
+  const auto neighbours = neighbour_finder_.Find(mesh_, pick, context_.movable);
   affected_.insert(affected_.end(), neighbours.begin(), neighbours.end());
   affected_quality_.resize(affected_.size());
   affected_criterion_.resize(affected_.size());
@@ -169,7 +177,9 @@ std::int64_t SequentialSubstep::TransformWorst() {
     context_.quality[element] = q;
     criterion_value_[element] = affected_criterion_[i];
     quality_min_.Update(element, q);
-    criterion_min_.Update(element, criterion_value_[element]);
+    if (criterion_ != SelectionCriterion::kMeanRatio) {
+      criterion_min_.Update(element, criterion_value_[element]);
+    }
     if (const std::int32_t rank = mesh_.canonical_rank(element); selection_.contains(rank)) {
       selection_.Update(rank, criterion_value_[element] + penalty_[element]);
     }
@@ -207,14 +217,16 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
     quality_sum_ += q;
     criterion_value_[element] = Criterion(element, q);
     quality_min_.Push(element, q);
-    criterion_min_.Push(element, criterion_value_[element]);
+    if (criterion_ != SelectionCriterion::kMeanRatio) {
+      criterion_min_.Push(element, criterion_value_[element]);
+    }
     if (HasMovableNode(element)) {
       selection_.Push(mesh_.canonical_rank(element), criterion_value_[element]);
     }
   }
 
   PhaseSummary summary{phase_, 0, 0.0, 0.0, 0.0, 0};
-  double best_min = criterion_min_.top_key();
+  double best_min = CriterionMinimum();
   double window_start_min = best_min;
   std::int64_t window_start = 0;
   // Sliding rule: the pick at which the best minimum last rose by the tolerance, and that value.
@@ -226,7 +238,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   while (!selection_.empty() && pick < cap) {
     ++pick;
     cycle_reverts += TransformWorst();
-    const double current_min = criterion_min_.top_key();
+    const double current_min = CriterionMinimum();
     if (current_min > best_min) {
       best_min = current_min;
       undo_since_best_.clear();

@@ -15,6 +15,17 @@ namespace {
 // small enough that two threads get a dozen each on a 100k-element mesh (25k nodes).
 constexpr std::int64_t kNodeGrain = 1024;
 
+// w_j = (1 − q_j)^η (Step 2.1). The paper's η = 1/4 (and 1/2, 1) as square roots, which act on
+// whole lanes and are correctly rounded; other exponents through libm's pow, lane by lane.
+Lanes WeightOfElement(Lanes defect, double eta) {
+  if (eta == 0.25) return Sqrt(Sqrt(defect));
+  if (eta == 0.5) return Sqrt(defect);
+  if (eta == 1.0) return defect;
+  Lanes weight;
+  for (int l = 0; l < kLanes; ++l) weight[l] = std::pow(defect[l], eta);
+  return weight;
+}
+
 }  // namespace
 
 SimultaneousIteration::SimultaneousIteration(const Mesh& mesh)
@@ -44,7 +55,7 @@ void SimultaneousIteration::TransformAll(const SmoothingContext& context) {
       });
 }
 
-// Block entries [begin, end), kLanes elements at a time (lanes.h); pow lane by lane.
+// Block entries [begin, end), kLanes elements at a time (lanes.h).
 template <ElementType kType>
 void SimultaneousIteration::TransformRange(const SmoothingContext& context,
                                            const ElementBlock& block, std::int64_t begin,
@@ -64,8 +75,9 @@ void SimultaneousIteration::TransformRange(const SmoothingContext& context,
     const auto moved = RegularizingStep<kType, Lanes>(
         GatherLanes<kType>(mesh.x(), mesh.y(), mesh.z(), block.nodes.data() + i * kNodes, count),
         sigma_min + sigma_span * (1.0 - q), params.simultaneous_rho);
+    const Lanes weights = WeightOfElement(1.0 - q, params.simultaneous_eta);
     for (int l = 0; l < count; ++l) {
-      const double weight = std::pow(1.0 - q[l], params.simultaneous_eta);
+      const double weight = weights[l];
       element_weight_[block.elements[i + l]] = weight;
       double* out = corner_xyz_.data() + 3 * (corner_base + (i + l) * kNodes);
       for (int k = 0; k < kNodes; ++k) {
