@@ -325,6 +325,13 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
     // Stop rules (issue 14, item 2), on the measure the stage serves, not on the cost its steps
     // lower: after two sweeps without a new best, or when no node moved (nothing can change).
     if (moved == 0 || sweep - best_sweep >= 2) break;
+    // The worst-element stage also ends when its first sweep lowered q_min: Σ c^p then trades
+    // the worst element for its neighbours from the state GETMe handed on, and on every shared
+    // and generator mesh where that happened (cub_fru, cub_wedge_like, knowles-mixed-beam, the
+    // rounded arteries) no later sweep came back above the start, so the second sweep the rule
+    // above waits for was a fifth to a quarter of the polish spent for nothing. Where the stage
+    // helps (the sharp arteries) its first sweep already lifts q_min.
+    if (goal == StageGoal::kQMin && sweep == 1 && current.q_min < best.q_min) break;
     // Once the sweeps settle, the gain of a sweep shrinks about geometrically (Gauss–Seidel on a
     // convex problem converges linearly), so what is still to come is about gain · r / (1 − r),
     // r = the ratio of the last two gains: stop when that is below the stage's tolerance.
