@@ -103,6 +103,40 @@ TEST(PolishTest, PolishAfterFullGetmeKeepsQMinAndRaisesQMean) {
   EXPECT_EQ(testing::CountInvalid(*mesh), 0);
 }
 
+TEST(PolishTest, WorstElementStageEndsWhenItsFirstSweepLowersQMin) {
+  // On this block the worst-element stage's first sweep lowers q_min below what the sequential
+  // substep handed on (checked first, from the events). The stage must then end after that one
+  // sweep and hand the sequential substep's state on unchanged: the run equals a run without the
+  // stage in every coordinate, one sweep longer.
+  SmoothingParams params;
+  params.threads = 2;
+  auto with_stage = meshgen::HybridBlock(8, 8, 6, 0.3, 13);
+  auto without_stage = meshgen::HybridBlock(8, 8, 6, 0.3, 13);
+  ASSERT_TRUE(with_stage.ok() && without_stage.ok());
+  std::vector<ProgressEvent> events;
+  auto result = Smooth(*with_stage, params, [&](const ProgressEvent& event) {
+    if (!event.phase_done) events.push_back(event);
+  });
+  ASSERT_TRUE(result.ok()) << result.status();
+  double handed_on_q_min = -1.0;
+  double first_sweep_q_min = -1.0;
+  for (const ProgressEvent& event : events) {
+    if (event.phase == Phase::kSequential) handed_on_q_min = event.q_min;
+    if (event.phase == Phase::kPolish && event.iteration == 1) first_sweep_q_min = event.q_min;
+  }
+  ASSERT_GE(first_sweep_q_min, 0.0);
+  ASSERT_LT(first_sweep_q_min, handed_on_q_min);
+
+  params.polish_worst_exponent = 0.0;
+  auto plain = Smooth(*without_stage, params);
+  ASSERT_TRUE(plain.ok()) << plain.status();
+  EXPECT_EQ(result->iterations_polish, plain->iterations_polish + 1);
+  EXPECT_TRUE(testing::CoordinateSnapshot(*with_stage) ==
+              testing::CoordinateSnapshot(*without_stage));
+  EXPECT_EQ(result->after.q_min, plain->after.q_min);
+  EXPECT_EQ(result->after.q_mean, plain->after.q_mean);
+}
+
 TEST(PolishTest, OnlyGetmePolishes) {
   for (Method method :
        {Method::kSimultaneous, Method::kSequential, Method::kWarpage, Method::kSmartLaplace}) {
