@@ -5,7 +5,7 @@
 //
 // Why not std::cbrt. libm's cbrt is an out-of-line call that splits and rebuilds its argument
 // with frexp and scalbn, lane by lane: it was 35–45 % of a whole default run on the shared meshes
-// (perf, docs/benchmarks.md), and it cannot share a vector register with the rest of a kernel.
+// (perf; docs/design.md), and it cannot share a vector register with the rest of a kernel.
 // Here the same operations act on one double or on every lane of Lanes at once, so the two
 // instantiations give the same bits lane for lane (lanes.h's rule), on every machine with IEEE
 // 754 doubles, without a library call.
