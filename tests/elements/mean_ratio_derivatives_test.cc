@@ -2,7 +2,9 @@
 // gradient and Hessian: the cost against an independent evaluation of Def. 3 / eq. (10) from the
 // paper's tables, the derivatives against central finite differences of the cost, and the
 // properties a polish relies on (regular elements are minima, similarity invariance, the Def. 2
-// barrier, convexity, descent).
+// barrier, convexity, descent). Last, the mean ratio's own gradient with respect to every node
+// (core/getme/elements/mean_ratio_gradient.h, for the worst-cluster stage) against central
+// differences of q.
 //
 // Derivatives are compared on their natural scale, c/d for the gradient and c/d² for the Hessian
 // (c the cost, d the node's distance to the barrier, BarrierDistance), not relative to themselves:
@@ -22,6 +24,7 @@
 
 #include "element_type_tags.h"
 #include "getme/elements/element_quality.h"
+#include "getme/elements/mean_ratio_gradient.h"
 #include "paper_tables.h"
 #include "random_elements.h"
 #include "reference_kernels.h"
@@ -477,6 +480,68 @@ TYPED_TEST(MeanRatioDerivativesTest, StepAgainstTheGradientLowersTheCost) {
   EXPECT_GE(checked, total * 9 / 10) << checked << " of " << total;
   ::testing::Test::RecordProperty("checked", checked);
   ::testing::Test::RecordProperty("total", total);
+}
+
+// q's gradient on the scale 1/d (every q_k ≤ 1 and, near the barrier, q_k ∝ (d − s)^{2/3}, whose
+// derivatives are smaller than 1/q_k's of the error model above: its a_3 is 0.3, not 3), so the
+// gradient tolerance above holds with room.
+TYPED_TEST(MeanRatioDerivativesTest, MeanRatioGradientMatchesCentralDifferencesOfQ) {
+  constexpr ElementType kType = TypeParam::kType;
+  UnitRandom random(1411 + TypeIndex(kType));
+  double worst = 0.0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const ElementNodes<kType> p = TrialElement<kType>(random, trial);
+    const double condition = DeterminantCondition(kType, ToPoints<kType>(p));
+    const MeanRatioGradientResult<kType> result = MeanRatioWithGradient<kType>(p);
+    // The same q as Def. 3's kernel, up to the rounding of the division by K.
+    EXPECT_NEAR(result.quality, MeanRatio<kType>(p), kRoundingMargin * kEpsilon * condition);
+    for (int node = 0; node < NodeCount(kType); ++node) {
+      const double d = BarrierDistance(kType, ToPoints<kType>(p), node);
+      const double h = kGradientStepFraction * d;
+      Vec3 difference;
+      for (int j = 0; j < 3; ++j) {
+        const Vec3 step = h * Vec3::Unit(j);
+        difference[j] = (MeanRatio<kType>(Moved<kType>(p, node, step)) -
+                         MeanRatio<kType>(Moved<kType>(p, node, -step))) /
+                        (2.0 * h);
+      }
+      const double error = (difference - result.gradient[node]).norm() * d;
+      const double tolerance = GradientTolerance(condition);
+      worst = std::max(worst, error / tolerance);
+      EXPECT_LE(error, tolerance) << "trial " << trial << ", node " << node << ": analytic "
+                                  << result.gradient[node].transpose() << ", differences "
+                                  << difference.transpose() << ", d " << d;
+    }
+  }
+  ::testing::Test::RecordProperty("worst_error_over_tolerance", Scientific(worst));
+}
+
+TYPED_TEST(MeanRatioDerivativesTest, MeanRatioGradientOfRequestedNodesOnly) {
+  // A node left out of `needed` gets zero; the requested ones get exactly the full result's bits
+  // (their sums run over the same node tetrahedra in the same order). An invalid element has
+  // kInvalidQuality and zero gradients.
+  constexpr ElementType kType = TypeParam::kType;
+  UnitRandom random(1412 + TypeIndex(kType));
+  for (int trial = 0; trial < 20; ++trial) {
+    const ElementNodes<kType> p = TrialElement<kType>(random, trial);
+    const MeanRatioGradientResult<kType> full = MeanRatioWithGradient<kType>(p);
+    for (int node = 0; node < NodeCount(kType); ++node) {
+      const MeanRatioGradientResult<kType> one = MeanRatioWithGradient<kType>(p, 1u << node);
+      EXPECT_EQ(one.quality, full.quality);
+      for (int other = 0; other < NodeCount(kType); ++other) {
+        if (other == node) {
+          EXPECT_EQ(one.gradient[other], full.gradient[other]) << "node " << node;
+        } else {
+          EXPECT_EQ(one.gradient[other], Vec3::Zero()) << "node " << other;
+        }
+      }
+    }
+  }
+  ElementNodes<kType> flat = RegularElement<kType>();
+  for (Vec3& node : flat) node[2] = 0.0;
+  const MeanRatioGradientResult<kType> invalid = MeanRatioWithGradient<kType>(flat);
+  EXPECT_EQ(invalid.quality, kInvalidQuality);
+  for (const Vec3& g : invalid.gradient) EXPECT_EQ(g, Vec3::Zero());
 }
 
 }  // namespace

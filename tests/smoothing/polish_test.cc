@@ -211,11 +211,20 @@ TEST(PolishTest, ParametersAreValidated) {
       {"polish_tolerance", [](SmoothingParams& p) { p.polish_tolerance = -1.0; }},
       {"polish_max_sweeps", [](SmoothingParams& p) { p.polish_max_sweeps = -1; }},
       {"polish_backtracking_steps", [](SmoothingParams& p) { p.polish_backtracking_steps = 31; }},
+      {"polish_cluster_trigger", [](SmoothingParams& p) { p.polish_cluster_trigger = -0.1; }},
+      {"polish_cluster_band", [](SmoothingParams& p) { p.polish_cluster_band = -1.0; }},
+      {"polish_cluster_exponent", [](SmoothingParams& p) { p.polish_cluster_exponent = 65.0; }},
+      {"polish_cluster_exponent", [](SmoothingParams& p) { p.polish_cluster_exponent = 0.5; }},
+      {"polish_cluster_tolerance", [](SmoothingParams& p) { p.polish_cluster_tolerance = -1e-3; }},
+      {"polish_cluster_max_rounds", [](SmoothingParams& p) { p.polish_cluster_max_rounds = -1; }},
+      {"polish_cluster_iterations", [](SmoothingParams& p) { p.polish_cluster_iterations = -1; }},
   };
   for (const BadValue& value : bad) {
     SmoothingParams changed;
     value.set(changed);
-    EXPECT_NE(changed.Validate().message().find(value.field), std::string::npos) << value.field;
+    const absl::Status status = changed.Validate();
+    EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument) << value.field;
+    EXPECT_NE(status.message().find(value.field), std::string::npos) << value.field;
   }
   params = SmoothingParams();
   params.polish_backtracking_steps = 0;

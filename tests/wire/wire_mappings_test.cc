@@ -86,6 +86,12 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   params.polish_worst_exponent = 4.0;
   params.polish_worst_tolerance = 2e-3;
   params.polish_worst_max_sweeps = 9;
+  params.polish_cluster_trigger = 0.5;
+  params.polish_cluster_band = 0.1;
+  params.polish_cluster_exponent = 12.0;
+  params.polish_cluster_tolerance = 1e-3;
+  params.polish_cluster_max_rounds = 7;
+  params.polish_cluster_iterations = 50;
   const v1::SmoothingParameters wire = ToWireParameters(params);
   EXPECT_FALSE(wire.has_polish());  // on is the default: not sent
   EXPECT_EQ(wire.polish_max_sweeps(), 17);
@@ -103,6 +109,25 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   EXPECT_EQ(back->polish_worst_exponent, 4.0);
   EXPECT_EQ(back->polish_worst_tolerance, 2e-3);
   EXPECT_EQ(back->polish_worst_max_sweeps, 9);
+  EXPECT_EQ(back->polish_cluster_trigger, 0.5);
+  EXPECT_EQ(back->polish_cluster_band, 0.1);
+  EXPECT_EQ(back->polish_cluster_exponent, 12.0);
+  EXPECT_EQ(back->polish_cluster_tolerance, 1e-3);
+  EXPECT_EQ(back->polish_cluster_max_rounds, 7);
+  EXPECT_EQ(back->polish_cluster_iterations, 50);
+  // Turning the stage off is a value (0), not an absent field: it must cross the wire.
+  SmoothingParams no_cluster;
+  no_cluster.polish_cluster_trigger = 0.0;
+  ASSERT_TRUE(ToWireParameters(no_cluster).has_polish_cluster_trigger());
+  back = ToEngineParams(ToWireParameters(no_cluster), 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->polish_cluster_trigger, 0.0);
+  v1::SmoothingParameters bad_exponent;
+  bad_exponent.set_polish_cluster_exponent(100.0);
+  const absl::StatusOr<SmoothingParams> refused = ToEngineParams(bad_exponent, 1);
+  EXPECT_EQ(refused.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(refused.status().message().find("polish_cluster_exponent"), std::string::npos)
+      << refused.status();
 
   params = SmoothingParams();
   params.untangle_free_boundary = true;

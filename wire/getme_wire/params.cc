@@ -120,6 +120,22 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
   if (wire.has_polish_worst_max_sweeps()) {
     params.polish_worst_max_sweeps = wire.polish_worst_max_sweeps();
   }
+  if (wire.has_polish_cluster_trigger()) {
+    params.polish_cluster_trigger = wire.polish_cluster_trigger();
+  }
+  if (wire.has_polish_cluster_band()) params.polish_cluster_band = wire.polish_cluster_band();
+  if (wire.has_polish_cluster_exponent()) {
+    params.polish_cluster_exponent = wire.polish_cluster_exponent();
+  }
+  if (wire.has_polish_cluster_tolerance()) {
+    params.polish_cluster_tolerance = wire.polish_cluster_tolerance();
+  }
+  if (wire.has_polish_cluster_max_rounds()) {
+    params.polish_cluster_max_rounds = wire.polish_cluster_max_rounds();
+  }
+  if (wire.has_polish_cluster_iterations()) {
+    params.polish_cluster_iterations = wire.polish_cluster_iterations();
+  }
   if (wire.has_polish()) params.polish = wire.polish();
   if (wire.has_polish_tolerance()) params.polish_tolerance = wire.polish_tolerance();
   if (wire.has_polish_max_sweeps()) params.polish_max_sweeps = wire.polish_max_sweeps();
@@ -195,6 +211,12 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.polish_worst_exponent, defaults.polish_worst_exponent, [&](double v) { wire.set_polish_worst_exponent(v); });
   SetIfChanged(params.polish_worst_tolerance, defaults.polish_worst_tolerance, [&](double v) { wire.set_polish_worst_tolerance(v); });
   SetIfChanged(params.polish_worst_max_sweeps, defaults.polish_worst_max_sweeps, [&](std::int64_t v) { wire.set_polish_worst_max_sweeps(v); });
+  SetIfChanged(params.polish_cluster_trigger, defaults.polish_cluster_trigger, [&](double v) { wire.set_polish_cluster_trigger(v); });
+  SetIfChanged(params.polish_cluster_band, defaults.polish_cluster_band, [&](double v) { wire.set_polish_cluster_band(v); });
+  SetIfChanged(params.polish_cluster_exponent, defaults.polish_cluster_exponent, [&](double v) { wire.set_polish_cluster_exponent(v); });
+  SetIfChanged(params.polish_cluster_tolerance, defaults.polish_cluster_tolerance, [&](double v) { wire.set_polish_cluster_tolerance(v); });
+  SetIfChanged(params.polish_cluster_max_rounds, defaults.polish_cluster_max_rounds, [&](std::int64_t v) { wire.set_polish_cluster_max_rounds(v); });
+  SetIfChanged(params.polish_cluster_iterations, defaults.polish_cluster_iterations, [&](std::int64_t v) { wire.set_polish_cluster_iterations(v); });
   SetIfChanged(params.polish_tolerance, defaults.polish_tolerance, [&](double v) { wire.set_polish_tolerance(v); });
   SetIfChanged(params.polish_max_sweeps, defaults.polish_max_sweeps, [&](std::int64_t v) { wire.set_polish_max_sweeps(v); });
   SetIfChanged(params.polish_node_tolerance, defaults.polish_node_tolerance, [&](double v) { wire.set_polish_node_tolerance(v); });

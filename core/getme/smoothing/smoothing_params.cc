@@ -102,7 +102,10 @@ absl::Status SmoothingParams::Validate() const {
         {"polish_node_tolerance", polish_node_tolerance},
         {"simultaneous_handoff_gain", simultaneous_handoff_gain},
         {"polish_worst_tolerance", polish_worst_tolerance},
-        {"polish_worst_exponent", polish_worst_exponent}}) {
+        {"polish_worst_exponent", polish_worst_exponent},
+        {"polish_cluster_trigger", polish_cluster_trigger},
+        {"polish_cluster_band", polish_cluster_band},
+        {"polish_cluster_tolerance", polish_cluster_tolerance}}) {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
@@ -115,7 +118,9 @@ absl::Status SmoothingParams::Validate() const {
                                     {"polish_max_sweeps", polish_max_sweeps},
                                     {"simultaneous_handoff_window", simultaneous_handoff_window},
                                     {"sequential_handoff_window", sequential_handoff_window},
-                                    {"polish_worst_max_sweeps", polish_worst_max_sweeps}}) {
+                                    {"polish_worst_max_sweeps", polish_worst_max_sweeps},
+                                    {"polish_cluster_max_rounds", polish_cluster_max_rounds},
+                                    {"polish_cluster_iterations", polish_cluster_iterations}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {
@@ -131,6 +136,11 @@ absl::Status SmoothingParams::Validate() const {
   // c(E)^p must stay finite: c reaches 10⁶ on nearly flat elements, and (10⁶)^32 = 10^192 fits.
   if (!(polish_worst_exponent <= 32.0)) {
     return OutOfRange("polish_worst_exponent", polish_worst_exponent, "in [0, 32]");
+  }
+  // (q_min / q)^p over a cluster's elements must stay finite while its elements are at most a
+  // few thousand times worse than q_min: 1e3^100 would overflow, 1e3^64 does not.
+  if (!(polish_cluster_exponent >= 1.0 && polish_cluster_exponent <= 64.0)) {
+    return OutOfRange("polish_cluster_exponent", polish_cluster_exponent, "in [1, 64]");
   }
   if (!(polish_over_relaxation >= 1.0 && polish_over_relaxation < 2.0)) {
     return OutOfRange("polish_over_relaxation", polish_over_relaxation, "in [1, 2)");

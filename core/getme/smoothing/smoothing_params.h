@@ -126,6 +126,20 @@ struct SmoothingParams {
   double polish_worst_exponent = 6.0;
   double polish_worst_tolerance = 1e-3;
   std::int64_t polish_worst_max_sweeps = 100;
+  // Worst-cluster stage (worst_cluster.h), after the mean stage: all free nodes of the elements
+  // within polish_cluster_band (relative) of q_min move together, by L-BFGS on
+  // Σ (q_min / q_e)^polish_cluster_exponent over every element around them, in rounds while q_min
+  // rises by more than polish_cluster_tolerance (relative), at most polish_cluster_max_rounds, each
+  // of at most polish_cluster_iterations iterations; the mean stage then runs again above the new
+  // q_min. It runs only where q_min < polish_cluster_trigger × q_mean, i.e. where the worst
+  // elements lag far behind the rest (pinned thin boundary layers: docs/thin-layers.md); 0 turns
+  // it off. Measured in docs/quality.md#polish.
+  double polish_cluster_trigger = 1.0 / 3.0;
+  double polish_cluster_band = 0.25;
+  double polish_cluster_exponent = 20.0;
+  double polish_cluster_tolerance = 2e-3;
+  std::int64_t polish_cluster_max_rounds = 30;
+  std::int64_t polish_cluster_iterations = 200;
   // Each node first tries its Newton step times this factor (successive over-relaxation), then
   // the plain step, then halvings. Measured in docs/quality.md#polish: on the thin-layer artery
   // meshes 1.8 needs 17 sweeps where 1.0 needs 97, for a higher q_mean. 1 = plain Gauss–Seidel.

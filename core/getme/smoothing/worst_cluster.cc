@@ -1,0 +1,380 @@
+#include "getme/smoothing/worst_cluster.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "getme/elements/mean_ratio_gradient.h"
+#include "getme/elements/vec3.h"
+
+namespace getme {
+namespace {
+
+// Limited-memory BFGS: pairs kept, Armijo constant, shortenings of a step before the round ends.
+constexpr int kHistory = 8;
+constexpr double kArmijo = 1e-4;
+constexpr int kMaxBacktracks = 30;
+// A round ends after this many iterations without a new highest min q over the cluster: f can
+// keep falling by lifting elements above the minimum, which is not what the stage is for.
+constexpr int kPatience = 40;
+// A round ends once f falls by less than this share of itself in an iteration.
+constexpr double kConverged = 1e-10;
+// The first step moves no node by more than this share of its scale (Cluster::scale2): L-BFGS
+// has no curvature yet, and the thin layers this stage is for invert under larger steps.
+constexpr double kFirstStepShare = 0.02;
+// Elements per ParallelFor chunk of an evaluation: each costs a few hundred nanoseconds.
+constexpr std::int64_t kElementGrain = 64;
+
+struct Cluster {
+  std::vector<NodeId> nodes;        // V: the worst elements' free nodes, ascending
+  std::vector<ElementId> elements;  // B: every element with a node in V, ascending
+  // Per node of V: the squared distance to its nearest neighbour in its elements, the scale in
+  // which L-BFGS measures the node's moves.
+  std::vector<double> scale2;
+};
+
+// Per element of B, what one evaluation computed: written in parallel, summed in B's order, so
+// the sums have the same bits for every thread count.
+struct ElementTerm {
+  double quality = 0.0;                         // kInvalidQuality if invalid
+  std::array<Vec3, kMaxElementNodes> gradient;  // ∂q/∂p for the element's nodes in V
+};
+
+// (q_ref / q)^p with a whole exponent by repeated squaring (the default 20: std::pow was a sixth
+// of the stage), otherwise std::pow.
+double Term(double ratio, double exponent, int whole_exponent) {
+  if (whole_exponent < 0) return std::pow(ratio, exponent);
+  double result = 1.0;
+  for (int e = whole_exponent; e > 0; e >>= 1, ratio *= ratio) {
+    if (e & 1) result *= ratio;
+  }
+  return result;
+}
+
+class ClusterObjective {
+ public:
+  ClusterObjective(SmoothingContext& context, const Cluster& cluster,
+                   const std::vector<int>& variable_of, double q_ref)
+      : context_(context),
+        cluster_(cluster),
+        variable_of_(variable_of),
+        q_ref_(q_ref),
+        exponent_(context.params.polish_cluster_exponent),
+        whole_exponent_(std::floor(exponent_) == exponent_ && exponent_ <= 64.0
+                            ? static_cast<int>(exponent_)
+                            : -1),
+        terms_(cluster.elements.size()) {}
+
+  // f = Σ_{e∈B} (q_ref / q_e)^p at the mesh's coordinates, +∞ if an element of B is invalid;
+  // the lowest q_e in `min_q`; with `gradient`, ∇f over V (3 entries per node, V's order).
+  double Evaluate(double& min_q, std::vector<double>* gradient) {
+    const Mesh& mesh = context_.mesh;
+    const bool with_gradient = gradient != nullptr;
+    context_.pool.ParallelFor(static_cast<std::int64_t>(cluster_.elements.size()), kElementGrain,
+                              [&](std::int64_t begin, std::int64_t end) {
+                                for (std::int64_t i = begin; i < end; ++i)
+                                  EvaluateElement(mesh, i, with_gradient);
+                              });
+    double f = 0.0;
+    min_q = std::numeric_limits<double>::infinity();
+    if (gradient) gradient->assign(3 * cluster_.nodes.size(), 0.0);
+    for (std::size_t i = 0; i < terms_.size(); ++i) {
+      const double q = terms_[i].quality;
+      if (!(q > 0.0)) return std::numeric_limits<double>::infinity();
+      min_q = std::min(min_q, q);
+      const double term = Term(q_ref_ / q, exponent_, whole_exponent_);
+      f += term;
+      if (!gradient) continue;
+      // d/dq (q_ref / q)^p = −p (q_ref / q)^p / q.
+      const double df_dq = -exponent_ * term / q;
+      const std::span<const NodeId> ids = mesh.element_nodes(cluster_.elements[i]);
+      for (std::size_t k = 0; k < ids.size(); ++k) {
+        const int v = variable_of_[ids[k]];
+        if (v < 0) continue;
+        for (int c = 0; c < 3; ++c) (*gradient)[3 * v + c] += df_dq * terms_[i].gradient[k][c];
+      }
+    }
+    return f;
+  }
+
+ private:
+  void EvaluateElement(const Mesh& mesh, std::int64_t i, bool with_gradient) {
+    const ElementId e = cluster_.elements[i];
+    const NodeId* ids = mesh.element_nodes(e).data();
+    DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
+      const ElementNodes<kType> p = GatherNodes<kType>(mesh, ids);
+      if (!with_gradient) {
+        terms_[i].quality = MeanRatioOrInvalid<kType>(p);
+        return;
+      }
+      unsigned needed = 0;
+      for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
+        if (variable_of_[ids[k]] >= 0) needed |= 1u << k;
+      }
+      const MeanRatioGradientResult<kType> r = MeanRatioWithGradient<kType>(p, needed);
+      terms_[i].quality = r.quality;
+      std::copy(r.gradient.begin(), r.gradient.end(), terms_[i].gradient.begin());
+    });
+  }
+
+  SmoothingContext& context_;
+  const Cluster& cluster_;
+  const std::vector<int>& variable_of_;
+  const double q_ref_;
+  const double exponent_;
+  const int whole_exponent_;
+  std::vector<ElementTerm> terms_;
+};
+
+void ReadCoordinates(const Mesh& mesh, const Cluster& cluster, std::vector<double>& values) {
+  values.resize(3 * cluster.nodes.size());
+  for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
+    values[3 * i] = mesh.x()[cluster.nodes[i]];
+    values[3 * i + 1] = mesh.y()[cluster.nodes[i]];
+    values[3 * i + 2] = mesh.z()[cluster.nodes[i]];
+  }
+}
+
+void WriteCoordinates(Mesh& mesh, const Cluster& cluster, const std::vector<double>& values) {
+  auto x = mesh.x();
+  auto y = mesh.y();
+  auto z = mesh.z();
+  for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
+    x[cluster.nodes[i]] = values[3 * i];
+    y[cluster.nodes[i]] = values[3 * i + 1];
+    z[cluster.nodes[i]] = values[3 * i + 2];
+  }
+}
+
+double Dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
+  return sum;
+}
+
+// L-BFGS (two-loop recursion) on the cluster's f from the mesh's coordinates, with a
+// backtracking line search on which an invalid element counts as f = +∞. Leaves the iterate
+// with the highest min q over B in the mesh (the start if none beat it).
+void Minimise(SmoothingContext& context, const Cluster& cluster,
+              const std::vector<int>& variable_of, double q_ref) {
+  Mesh& mesh = context.mesh;
+  ClusterObjective objective(context, cluster, variable_of, q_ref);
+  const std::size_t n = 3 * cluster.nodes.size();
+  std::vector<double> x;
+  ReadCoordinates(mesh, cluster, x);
+  std::vector<double> g;
+  double min_q = 0.0;
+  double f = objective.Evaluate(min_q, &g);
+  if (!std::isfinite(f)) return;
+  double best_min_q = min_q;
+  std::vector<double> best_x = x;
+  int best_iteration = 0;
+  std::deque<std::vector<double>> s_history;
+  std::deque<std::vector<double>> y_history;
+  std::deque<double> rho_history;
+  std::vector<double> d(n), trial(n), g_new, alpha;
+  for (int iteration = 1; iteration <= context.params.polish_cluster_iterations; ++iteration) {
+    // d = −H g by the two-loop recursion.
+    d = g;
+    alpha.assign(s_history.size(), 0.0);
+    for (int k = static_cast<int>(s_history.size()) - 1; k >= 0; --k) {
+      alpha[k] = rho_history[k] * Dot(s_history[k], d);
+      for (std::size_t i = 0; i < n; ++i) d[i] -= alpha[k] * y_history[k][i];
+    }
+    // H₀ = γ D with D = diag(h_i²): each node's moves measured in its own length scale h_i
+    // (Cluster::scale2). A scalar H₀ would take the thin layers' nodes, a hundredth of a wall
+    // edge apart, at the scale of the interior's, and every step would end in a backtrack; with D
+    // the arteries' rounds lift q_min further in fewer evaluations (docs/thin-layers.md).
+    for (std::size_t i = 0; i < n; ++i) d[i] *= cluster.scale2[i / 3];
+    if (!s_history.empty()) {
+      const std::vector<double>& y_last = y_history.back();
+      double y_d_y = 0.0;
+      for (std::size_t i = 0; i < n; ++i) y_d_y += y_last[i] * y_last[i] * cluster.scale2[i / 3];
+      const double gamma = Dot(s_history.back(), y_last) / y_d_y;
+      for (double& v : d) v *= gamma;
+    } else {
+      // No curvature yet: no node moves by more than kFirstStepShare of its scale.
+      double largest = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        largest = std::max(largest, std::abs(d[i]) / std::sqrt(cluster.scale2[i / 3]));
+      }
+      if (!(largest > 0.0)) break;
+      for (double& v : d) v *= kFirstStepShare / largest;
+    }
+    for (std::size_t k = 0; k < s_history.size(); ++k) {
+      const double beta = rho_history[k] * Dot(y_history[k], d);
+      for (std::size_t i = 0; i < n; ++i) d[i] += s_history[k][i] * (alpha[k] - beta);
+    }
+    for (double& v : d) v = -v;
+    const double slope = Dot(g, d);
+    if (!(slope < 0.0)) {
+      if (s_history.empty()) break;
+      // Curvature pairs that no longer describe f: start again from steepest descent.
+      s_history.clear();
+      y_history.clear();
+      rho_history.clear();
+      continue;
+    }
+    double step = 1.0;
+    double f_trial = std::numeric_limits<double>::infinity();
+    bool accepted = false;
+    for (int backtrack = 0; backtrack < kMaxBacktracks; ++backtrack) {
+      for (std::size_t i = 0; i < n; ++i) trial[i] = x[i] + step * d[i];
+      WriteCoordinates(mesh, cluster, trial);
+      f_trial = objective.Evaluate(min_q, nullptr);
+      if (f_trial <= f + kArmijo * step * slope) {
+        accepted = true;
+        break;
+      }
+      // The minimiser of the quadratic through f(x), the slope and f(x + step d), kept within
+      // [0.1, 0.5] of the step: f grows like q^−p towards a flattening element, so a halving
+      // at a time takes many evaluations to come back from a step that overshot by orders of
+      // magnitude. An invalid element (f = +∞) shrinks the step tenfold.
+      double next = 0.1 * step;
+      if (std::isfinite(f_trial)) {
+        const double curvature = f_trial - f - slope * step;
+        if (curvature > 0.0)
+          next = std::clamp(-slope * step * step / (2.0 * curvature), 0.1 * step, 0.5 * step);
+      }
+      step = next;
+    }
+    if (!accepted) break;
+    if (min_q > best_min_q) {
+      best_min_q = min_q;
+      best_x = trial;
+      best_iteration = iteration;
+    }
+    const bool converged = f - f_trial <= kConverged * f;
+    objective.Evaluate(min_q, &g_new);
+    std::vector<double> s(n);
+    std::vector<double> y(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      s[i] = trial[i] - x[i];
+      y[i] = g_new[i] - g[i];
+    }
+    const double sy = Dot(s, y);
+    x.swap(trial);
+    g.swap(g_new);
+    f = f_trial;
+    if (converged || iteration - best_iteration >= kPatience || context.Cancelled()) break;
+    if (sy > 0.0) {
+      s_history.push_back(std::move(s));
+      y_history.push_back(std::move(y));
+      rho_history.push_back(1.0 / sy);
+      if (static_cast<int>(s_history.size()) > kHistory) {
+        s_history.pop_front();
+        y_history.pop_front();
+        rho_history.pop_front();
+      }
+    }
+  }
+  WriteCoordinates(mesh, cluster, best_x);
+}
+
+// The round's cluster: the elements within the band above q_min, their free nodes, and every
+// element around those nodes. Empty nodes if the worst element has no free node: then nothing
+// can lift q_min.
+Cluster FindCluster(const SmoothingContext& context, double q_min, std::vector<int>& variable_of,
+                    std::vector<std::uint8_t>& in_cluster) {
+  const Mesh& mesh = context.mesh;
+  const double limit = q_min * (1.0 + context.params.polish_cluster_band);
+  Cluster cluster;
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    const double q = context.quality[e];
+    if (q > limit) continue;
+    bool any_free = false;
+    for (NodeId node : mesh.element_nodes(e)) {
+      if (!context.movable[node]) continue;
+      any_free = true;
+      if (variable_of[node] < 0) {
+        variable_of[node] = 0;
+        cluster.nodes.push_back(node);
+      }
+    }
+    if (!any_free && q <= q_min) {
+      for (NodeId node : cluster.nodes) variable_of[node] = -1;
+      return {};
+    }
+  }
+  std::sort(cluster.nodes.begin(), cluster.nodes.end());
+  for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
+    variable_of[cluster.nodes[i]] = static_cast<int>(i);
+  }
+  for (NodeId node : cluster.nodes) {
+    for (ElementId e : mesh.node_elements(node)) {
+      if (!in_cluster[e]) {
+        in_cluster[e] = 1;
+        cluster.elements.push_back(e);
+      }
+    }
+  }
+  std::sort(cluster.elements.begin(), cluster.elements.end());
+  cluster.scale2.resize(cluster.nodes.size());
+  for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
+    const NodeId node = cluster.nodes[i];
+    const Vec3 p(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (ElementId e : mesh.node_elements(node)) {
+      for (NodeId other : mesh.element_nodes(e)) {
+        if (other == node) continue;
+        nearest = std::min(
+            nearest, (Vec3(mesh.x()[other], mesh.y()[other], mesh.z()[other]) - p).squaredNorm());
+      }
+    }
+    // Nodes of a valid element are distinct, so the distance is positive; the floor only keeps a
+    // degenerate input from dividing by zero.
+    cluster.scale2[i] = std::max(nearest, std::numeric_limits<double>::min());
+  }
+  return cluster;
+}
+
+}  // namespace
+
+absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summary& current,
+                             PhaseSummary& summary) {
+  Mesh& mesh = context.mesh;
+  const SmoothingParams& params = context.params;
+  std::vector<int> variable_of(mesh.node_count(), -1);
+  std::vector<std::uint8_t> in_cluster(mesh.element_count(), 0);
+  std::vector<double> start;
+  std::vector<double> start_quality;
+  for (std::int64_t round = 1; round <= params.polish_cluster_max_rounds; ++round) {
+    if (context.Cancelled()) {
+      return absl::CancelledError("smoothing cancelled during the polish's worst-cluster stage");
+    }
+    const double q_start = current.q_min;
+    if (!(q_start > 0.0)) break;
+    Cluster cluster = FindCluster(context, q_start, variable_of, in_cluster);
+    if (cluster.nodes.empty()) break;
+    ReadCoordinates(mesh, cluster, start);
+    start_quality.resize(cluster.elements.size());
+    for (std::size_t i = 0; i < cluster.elements.size(); ++i) {
+      start_quality[i] = context.quality[cluster.elements[i]];
+    }
+    Minimise(context, cluster, variable_of, q_start);
+    // The stored qualities get MeanRatioOrInvalid's bits, as every other phase writes them.
+    for (ElementId e : cluster.elements) context.quality[e] = ElementQualityOrInvalid(mesh, e);
+    const SmoothingContext::Summary after = context.Summarize();
+    for (NodeId node : cluster.nodes) variable_of[node] = -1;
+    for (ElementId e : cluster.elements) in_cluster[e] = 0;
+    if (!(after.invalid == 0 && after.q_min > q_start)) {
+      WriteCoordinates(mesh, cluster, start);
+      for (std::size_t i = 0; i < cluster.elements.size(); ++i) {
+        context.quality[cluster.elements[i]] = start_quality[i];
+      }
+      break;
+    }
+    current = after;
+    ++summary.iterations;
+    context.Report({Phase::kPolish, summary.iterations, current.q_min, current.q_mean,
+                    current.invalid, 0, context.ElapsedSeconds(), false});
+    if (after.q_min < q_start * (1.0 + params.polish_cluster_tolerance)) break;
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace getme
