@@ -16,7 +16,10 @@ namespace getme {
 //   1. worst elements: cost Σ c(E)^p, p = params.polish_worst_exponent, no q_min floor while it
 //      runs, the best-q_min state handed on (skipped for p ≤ 1);
 //   2. mean: cost Σ c(E), no element below the q_min the stage began with, the best-q_mean state
-//      handed on.
+//      handed on;
+//   3. worst cluster, only where q_min < params.polish_cluster_trigger × q_mean after stage 2: the
+//      free nodes of all the worst elements move together (worst_cluster.h), then stage 2 runs
+//      again above the q_min that reached.
 // So the mesh's q_min never falls below the polish's input and nothing inverts.
 //
 // Nodes are swept one colour of a node colouring (node_colouring.h) at a time: nodes of one
