@@ -66,6 +66,23 @@ void CollectFaces(const ElementBlock& block, std::vector<FaceKey>& faces) {
   }
 }
 
+// The faces in ascending order, as std::sort would leave them, but bucketed first by their
+// smallest node id (the key's leading 32 bits) with a counting sort, so only the few faces of
+// one node (about 20 on a tetrahedral mesh) are sorted together: a single sort of all faces was
+// 4 % of a whole default run on cub_wedge_like.vtk (450k faces), more than reading the file.
+std::vector<FaceKey> SortFaces(const std::vector<FaceKey>& faces, std::int64_t node_count) {
+  std::vector<std::int64_t> start(static_cast<std::size_t>(node_count) + 1, 0);
+  for (const FaceKey& face : faces) ++start[(face.low >> 32) + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<FaceKey> sorted(faces.size());
+  std::vector<std::int64_t> cursor(start.begin(), start.end() - 1);
+  for (const FaceKey& face : faces) sorted[cursor[face.low >> 32]++] = face;
+  for (std::int64_t node = 0; node < node_count; ++node) {
+    std::sort(sorted.begin() + start[node], sorted.begin() + start[node + 1]);
+  }
+  return sorted;
+}
+
 }  // namespace
 
 std::span<const NodeId> Mesh::element_nodes(ElementId element) const {
@@ -275,14 +292,14 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
 
   // Boundary: faces used by exactly one element (sorting groups equal faces together); a face of
   // three or more elements is refused (overlapping elements).
-  std::vector<FaceKey> faces;
-  faces.reserve(mesh.corner_count());
+  std::vector<FaceKey> collected;
+  collected.reserve(mesh.corner_count());
   for (ElementType type : kAllElementTypes) {
     DispatchElementType(type, [&]<ElementType kType>() {
-      CollectFaces<kType>(mesh.blocks_[TypeIndex(kType)], faces);
+      CollectFaces<kType>(mesh.blocks_[TypeIndex(kType)], collected);
     });
   }
-  std::sort(faces.begin(), faces.end());
+  const std::vector<FaceKey> faces = SortFaces(collected, node_count);
   mesh.boundary_.assign(node_count, 0);
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;
