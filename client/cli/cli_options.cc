@@ -38,7 +38,7 @@ Options:
                        laplace
   --threads N          worker threads; 0 = all cores (default). Results do not depend on it.
   --max-iterations N   cap on the iterations of every phase (untangle, simultaneous,
-                       sequential, Laplace; polish: sweeps)
+                       sequential, Laplace; polish: sweeps and worst-cluster rounds)
   --free-boundary      let boundary nodes move too
   --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
   --no-untangle        refuse a mesh with invalid elements instead of untangling it

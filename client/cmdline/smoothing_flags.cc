@@ -18,6 +18,7 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
     params.laplace_max_iterations = *flags.max_iterations;
     params.polish_max_sweeps = *flags.max_iterations;
     params.polish_worst_max_sweeps = *flags.max_iterations;
+    params.polish_cluster_max_rounds = *flags.max_iterations;
   }
   return params;
 }

@@ -52,6 +52,7 @@ TEST(CliOptions, NoPolishAndMaxIterationsReachThePolish) {
   EXPECT_TRUE(ToSmoothingParams(*options).polish);
   EXPECT_EQ(ToSmoothingParams(*options).polish_max_sweeps, 3);
   EXPECT_EQ(ToSmoothingParams(*options).polish_worst_max_sweeps, 3);
+  EXPECT_EQ(ToSmoothingParams(*options).polish_cluster_max_rounds, 3);
 }
 
 }  // namespace

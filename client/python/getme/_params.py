@@ -12,10 +12,10 @@ from getme._stubs import params_pb2
 from getme._wire import ITERATION_COUNTERS, PER_TYPE_KEYS, is_method, method_names, method_value
 
 # The CLI's --max-iterations: one cap for every phase (client/cmdline/smoothing_flags.cc), i.e.
-# every max_iterations_field of _wire.ITERATION_COUNTERS and the polish's worst-element stage,
-# which the result counts with the polish's sweeps.
+# every max_iterations_field of _wire.ITERATION_COUNTERS and the polish's worst-element and
+# worst-cluster stages, whose sweeps and rounds the result counts with the polish's sweeps.
 MAX_ITERATIONS = "max_iterations"
-_ALSO_CAPPED = ("polish_worst_max_sweeps",)
+_ALSO_CAPPED = ("polish_worst_max_sweeps", "polish_cluster_max_rounds")
 
 _FIELDS = {f.name: f for f in params_pb2.SmoothingParameters.DESCRIPTOR.fields}
 
