@@ -3,8 +3,8 @@
 
     scripts/check_layers.py [ROOT]
 
-Each rule names a folder and the quoted include prefixes its C++ files must not use. The build
-enforces the same layers through what each CMake target links (CMakeLists.txt,
+Each rule names a folder and the include prefixes (quoted or in brackets) its C++ files must not
+use. The build enforces the same layers through what each CMake target links (CMakeLists.txt,
 getme_check_layers); this check also catches a header reached through a path the linker would not
 see (e.g. core including a generated getme/v1 header). Exits 1 and names file, line and include
 at the first violations.
@@ -17,8 +17,12 @@ import sys
 # folder -> include prefixes it must not use
 FORBIDDEN = {
     # the engine: absl, Eigen and the standard library only
-    "core": ["getme/v1/", "getme_wire/", "getme_server/", "getme_support/", "remote/", "cli/",
-             "formats/", "events/", "grpcpp/", "google/protobuf/", "spdlog/"],
+    "core": ["getme/v1/", "getme_wire/", "getme_server/", "getme_support/", "getme_surface/",
+             "remote/", "cli/", "formats/", "events/", "grpcpp/", "google/protobuf/", "spdlog/",
+             "CGAL/"],
+    # the input's boundary surface: the engine's mesh and CGAL, nothing of the service or files
+    "surface": ["getme/v1/", "getme_wire/", "getme_server/", "getme_support/", "remote/", "cli/",
+                "formats/", "events/", "grpcpp/", "google/protobuf/", "spdlog/"],
     "support": ["getme/", "getme_wire/", "getme_server/", "remote/", "cli/", "formats/",
                 "grpcpp/", "google/protobuf/"],
     # the wire mappings: generated code and the engine only
@@ -28,7 +32,8 @@ FORBIDDEN = {
     "server": ["remote/", "cli/", "formats/", "events/"],
     "client": ["getme_server/"],
 }
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+# Quoted and angle-bracket includes: library headers (<grpcpp/...>, <CGAL/...>) come in brackets.
+INCLUDE = re.compile(r'^\s*#\s*include\s+["<]([^">]+)[">]')
 
 
 def violations(root: pathlib.Path):

@@ -1,0 +1,131 @@
+// Nearest points on the input's boundary (surface/getme_surface/surface_projector.h) against an
+// independent brute-force search over every boundary triangle, on a faceted sphere and a faceted
+// cylinder; feature nodes go to their curve, corners and interior nodes stay.
+
+#include "getme_surface/surface_projector.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "surface_test_meshes.h"
+
+namespace getme::surface {
+namespace {
+
+struct Triangle3 {
+  Vec3 a, b, c;
+};
+
+// The closest point of a triangle to p: the projection on its plane if that falls inside,
+// otherwise the closest of the three edges' closest points (clamped segment projections).
+Vec3 ClosestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return a + t * ab;
+}
+
+Vec3 ClosestOnTriangle(const Vec3& p, const Triangle3& t) {
+  const Vec3 normal = (t.b - t.a).cross(t.c - t.a);
+  const Vec3 on_plane = p - normal * ((p - t.a).dot(normal) / normal.squaredNorm());
+  const auto inside = [&](const Vec3& u, const Vec3& v) {
+    return (v - u).cross(on_plane - u).dot(normal) >= 0.0;
+  };
+  if (inside(t.a, t.b) && inside(t.b, t.c) && inside(t.c, t.a)) return on_plane;
+  Vec3 best = ClosestOnSegment(p, t.a, t.b);
+  for (const Vec3& candidate : {ClosestOnSegment(p, t.b, t.c), ClosestOnSegment(p, t.c, t.a)}) {
+    if ((candidate - p).squaredNorm() < (best - p).squaredNorm()) best = candidate;
+  }
+  return best;
+}
+
+std::vector<Triangle3> Triangles(const Mesh& mesh, const BoundarySurface& surface, int group) {
+  const auto at = [&](NodeId n) { return Vec3(mesh.x()[n], mesh.y()[n], mesh.z()[n]); };
+  std::vector<Triangle3> triangles;
+  for (const BoundaryFace& face : surface.faces) {
+    if (group >= 0 && face.group != group) continue;
+    // Any split of a planar quad covers it; these test meshes have planar quads only.
+    triangles.push_back({at(face.nodes[0]), at(face.nodes[1]), at(face.nodes[2])});
+    if (face.size == 4)
+      triangles.push_back({at(face.nodes[0]), at(face.nodes[2]), at(face.nodes[3])});
+  }
+  return triangles;
+}
+
+double BruteForceDistance(const Vec3& p, const std::vector<Triangle3>& triangles) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Triangle3& t : triangles) best = std::min(best, (ClosestOnTriangle(p, t) - p).norm());
+  return best;
+}
+
+void ExpectNearestAgreesWithBruteForce(const Mesh& mesh, double spread) {
+  absl::StatusOr<BoundarySurface> surface = ExtractBoundarySurface(mesh);
+  ASSERT_TRUE(surface.ok()) << surface.status();
+  absl::StatusOr<SurfaceProjector> projector = SurfaceProjector::Build(mesh, *surface);
+  ASSERT_TRUE(projector.ok()) << projector.status();
+  const std::vector<Triangle3> triangles = Triangles(mesh, *surface, 0);
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> coordinate(-spread, spread);
+  for (int trial = 0; trial < 500; ++trial) {
+    const Vec3 p(coordinate(random), coordinate(random), coordinate(random));
+    const Vec3 nearest = projector->OnGroup(0, p);
+    const double expected = BruteForceDistance(p, triangles);
+    // The point found is as near as the nearest point of any triangle...
+    EXPECT_NEAR((nearest - p).norm(), expected, 1e-12 * (1.0 + expected)) << "trial " << trial;
+    // ...and lies on the surface.
+    EXPECT_LE(BruteForceDistance(nearest, triangles), 1e-12) << "trial " << trial;
+    EXPECT_NEAR(projector->DistanceToSurface(p), expected, 1e-12 * (1.0 + expected));
+  }
+}
+
+TEST(SurfaceProjectorTest, NearestPointOnAFacetedSphereMatchesBruteForce) {
+  ExpectNearestAgreesWithBruteForce(test::FacetedSphere(), 1.5);
+}
+
+TEST(SurfaceProjectorTest, NearestPointOnAFacetedCylinderMatchesBruteForce) {
+  ExpectNearestAgreesWithBruteForce(test::PolygonPrism(12, 2, 1.5), 2.0);
+}
+
+TEST(SurfaceProjectorTest, FeatureNodesGoToTheirCurveCornersAndInteriorNodesStay) {
+  const Mesh mesh = test::HexCube(3);
+  absl::StatusOr<BoundarySurface> surface = ExtractBoundarySurface(mesh);
+  ASSERT_TRUE(surface.ok()) << surface.status();
+  absl::StatusOr<SurfaceProjector> projector = SurfaceProjector::Build(mesh, *surface);
+  ASSERT_TRUE(projector.ok()) << projector.status();
+  EXPECT_EQ(projector->group_count(), 1);
+  EXPECT_EQ(projector->curve_count(), 12);
+  const auto id = [](int i, int j, int k) { return i + 4 * (j + 4 * k); };
+  // Node (1, 0, 0) lies on the cube edge y = z = 0: displaced anywhere, it comes back to that
+  // edge (y = z = 0), at the displaced point's x clamped to the edge's [0, 3].
+  const NodeId feature = id(1, 0, 0);
+  ASSERT_EQ(surface->kind[feature], BoundaryNodeKind::kFeature);
+  for (const Vec3& moved : {Vec3(1.3, 0.2, -0.1), Vec3(-0.5, 0.4, 0.3), Vec3(2.2, -0.3, 0.6)}) {
+    const Vec3 back =
+        projector->Project(BoundaryNodeKind::kFeature, surface->support[feature], moved);
+    EXPECT_EQ(back[1], 0.0);
+    EXPECT_EQ(back[2], 0.0);
+    EXPECT_NEAR(back[0], std::clamp(moved[0], 0.0, 3.0), 1e-15);
+  }
+  // A node on the top face (z = 3) comes back to z = 3.
+  const NodeId top = id(1, 2, 3);
+  ASSERT_EQ(surface->kind[top], BoundaryNodeKind::kSurface);
+  const Vec3 back = projector->Project(BoundaryNodeKind::kSurface, 0, Vec3(1.2, 1.9, 3.4));
+  EXPECT_NEAR((back - Vec3(1.2, 1.9, 3.0)).norm(), 0.0, 1e-15);
+  // Corners and interior nodes are not moved by the projector.
+  const Vec3 anywhere(0.1, 0.2, 0.3);
+  EXPECT_EQ(projector->Project(BoundaryNodeKind::kCorner, -1, anywhere), anywhere);
+  EXPECT_EQ(projector->Project(BoundaryNodeKind::kInterior, -1, anywhere), anywhere);
+}
+
+TEST(SurfaceProjectorTest, ASurfaceOfAnotherMeshIsRefused) {
+  const Mesh mesh = test::HexCube(2);
+  absl::StatusOr<BoundarySurface> surface = ExtractBoundarySurface(test::HexCube(3));
+  ASSERT_TRUE(surface.ok()) << surface.status();
+  absl::StatusOr<SurfaceProjector> projector = SurfaceProjector::Build(mesh, *surface);
+  EXPECT_EQ(projector.status().code(), absl::StatusCode::kInvalidArgument);
+}
+
+}  // namespace
+}  // namespace getme::surface
