@@ -1,6 +1,7 @@
 #include "cli/cli_options.h"
 
 #include "absl/strings/match.h"
+#include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "cmdline/flag_parser.h"
 #include "cmdline/smoothing_flags.h"
@@ -31,7 +32,8 @@ ASCII or BINARY), .vtu (VTK XML), .msh (Gmsh 2.2 and 4.1, ASCII or binary), .mes
 Surface cells, lines and vertices are kept with their tags and move with their nodes (their
 mean_ratio and warpage are -1), as is every other array of the input. Nodes with a nonzero
 point array `fixed` (MEDIT: RequiredVertices) never move; boundary nodes stay fixed unless
---free-boundary is given.
+--boundary free (or --free-boundary) is given, or slide along the input's surface with
+--boundary slide.
 
 Options:
   --method M           getme (default), simultaneous, sequential, warpage, smart-laplace,
@@ -39,7 +41,12 @@ Options:
   --threads N          worker threads; 0 = all cores (default). Results do not depend on it.
   --max-iterations N   cap on the iterations of every phase (untangle, simultaneous,
                        sequential, Laplace; polish: sweeps and worst-cluster rounds)
-  --free-boundary      let boundary nodes move too
+  --boundary B         fixed (default): boundary nodes stay; free: they move like the others;
+                       slide: they move along the input's own surface, nodes on feature
+                       edges along their edge, corners stay (docs/boundary.md)
+  --free-boundary      the same as --boundary free
+  --feature-angle DEG  with --boundary slide: faces meeting at more than DEG degrees (default
+                       45) have a feature edge between them
   --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
   --no-untangle        refuse a mesh with invalid elements instead of untangling it
   --untangle-boundary  while untangling, let the boundary nodes of invalid elements move
@@ -265,6 +272,8 @@ absl::Status CheckAccessFlags(const ServerAccessOptions& access, bool remote) {
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args) {
   SmoothCommandOptions options;
   std::int64_t max_iterations = 0;
+  std::string boundary;  // --boundary, empty if not given
+  bool feature_angle_given = false;
   bool binary = false;
   bool ascii = false;
   cmdline::FlagTable flags = {
@@ -282,6 +291,28 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
        {true,
         IntegerFlag<std::int64_t>("--max-iterations", max_iterations, 1, std::int64_t{1} << 40)}},
       {"--free-boundary", {false, SetTrue(options.smoothing.free_boundary)}},
+      {"--boundary",
+       {true,
+        [&](const std::string& value) -> absl::Status {
+          if (value != "fixed" && value != "slide" && value != "free") {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--boundary '", value, "': expected fixed, slide or free"));
+          }
+          boundary = value;
+          return absl::OkStatus();
+        }}},
+      {"--feature-angle",
+       {true,
+        [&](const std::string& value) -> absl::Status {
+          double angle = 0.0;
+          if (!absl::SimpleAtod(value, &angle) || !(angle >= 0.0 && angle <= 180.0)) {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--feature-angle '", value, "': expected degrees in [0, 180]"));
+          }
+          options.smoothing.feature_angle_degrees = angle;
+          feature_angle_given = true;
+          return absl::OkStatus();
+        }}},
       {"--literal", {false, SetTrue(options.smoothing.literal)}},
       {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
       {"--no-polish", {false, SetTrue(options.smoothing.no_polish)}},
@@ -312,6 +343,23 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
     return status;
   }
   if (max_iterations > 0) options.smoothing.max_iterations = max_iterations;
+  if (!boundary.empty()) {
+    if (options.smoothing.free_boundary && boundary != "free") {
+      return absl::InvalidArgumentError(absl::StrCat("--free-boundary and --boundary ", boundary,
+                                                     " contradict each other: give one"));
+    }
+    options.smoothing.free_boundary = boundary == "free";
+    options.smoothing.slide_boundary = boundary == "slide";
+  }
+  if (feature_angle_given && !options.smoothing.slide_boundary) {
+    return absl::InvalidArgumentError(
+        "--feature-angle only shapes a sliding boundary: it needs --boundary slide");
+  }
+  if (options.smoothing.slide_boundary && !options.server.empty()) {
+    return absl::UnimplementedError(
+        "--boundary slide runs in this process only for now: the service cannot slide boundary "
+        "nodes yet (docs/boundary.md); drop --server or the option");
+  }
   if (auto s = CheckAccessFlags(options.access, !options.server.empty()); !s.ok()) return s;
   if (options.detach && options.server.empty()) {
     return absl::InvalidArgumentError("--detach needs --server HOST:PORT (a job to detach from)");

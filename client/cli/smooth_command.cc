@@ -1,6 +1,7 @@
 #include "cli/smooth_command.h"
 
 #include <cstdio>
+#include <memory>
 
 #include "absl/strings/str_cat.h"
 #include "cli/failure.h"
@@ -8,6 +9,7 @@
 #include "cli/smooth_run.h"
 #include "formats/grid_mesh.h"
 #include "getme/smoothing/smoother.h"
+#include "getme_surface/surface_slide.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
@@ -50,13 +52,32 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
                options.input, formats::FormatDisplayName(run->document.format), mesh.node_count(),
                mesh.element_count(), report.passthrough_cells, fixed_nodes);
 
+  report.boundary = options.smoothing.slide_boundary  ? "slide"
+                    : options.smoothing.free_boundary ? "free"
+                                                      : "fixed";
+  // --boundary slide: the input's surface, its features and corners, before anything moves.
+  std::unique_ptr<surface::SurfaceSlide> slide;
+  if (params.slide_boundary) {
+    absl::StatusOr<std::unique_ptr<surface::SurfaceSlide>> built =
+        surface::SurfaceSlide::Build(mesh, {}, params.feature_angle_degrees);
+    if (!built.ok()) return fail(WithInput(options.input, built.status()), kExitFailure);
+    slide = *std::move(built);
+    const surface::BoundarySurface& boundary = slide->surface();
+    report.boundary_surface =
+        events::BoundarySurfaceCounts{static_cast<std::int64_t>(boundary.feature_edges.size()),
+                                      boundary.curve_count, boundary.corner_count};
+    spdlog::info("boundary slides: {} feature edges in {} curves, {} corners (feature angle {}°)",
+                 boundary.feature_edges.size(), boundary.curve_count, boundary.corner_count,
+                 params.feature_angle_degrees);
+  }
+
   ProgressSink sink(options, run->trace.get());
   const ProgressCallback progress = [&](const ProgressEvent& event) { sink.OnEvent(event); };
   CancellationToken cancel;
   absl::StatusOr<SmoothingResult> result;
   {
     InterruptScope interrupt(&cancel);
-    result = Smooth(mesh, params, progress, &cancel);
+    result = Smooth(mesh, params, progress, &cancel, slide.get());
   }
   sink.Finish();
   if (!result.ok()) {

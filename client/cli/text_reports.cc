@@ -74,6 +74,16 @@ std::string FormatSmoothSummary(const events::SmoothReport& report) {
                             phase.reverted_nodes);
     }
   }
+  if (result.boundary_slide && report.boundary_surface) {
+    const BoundarySlideSummary& slide = *result.boundary_slide;
+    absl::StrAppendFormat(
+        &out,
+        "\nboundary         slide: %d of %d sliding nodes moved, at most %.3g from the input's "
+        "surface\n                 %d feature edges in %d curves, %d corners (fixed)\n",
+        slide.slid_nodes, slide.sliding_nodes, slide.max_distance,
+        report.boundary_surface->feature_edges, report.boundary_surface->feature_curves,
+        report.boundary_surface->corners);
+  }
   absl::StrAppendFormat(&out, "\n%-16s %.3f\n%-16s %d\n", "seconds", result.seconds, "threads",
                         result.threads);
   return out;

@@ -7,6 +7,8 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
   params.method = flags.method;
   params.threads = flags.threads;
   params.fix_boundary = !flags.free_boundary;
+  params.slide_boundary = flags.slide_boundary;
+  params.feature_angle_degrees = flags.feature_angle_degrees;
   params.untangle = !flags.no_untangle;
   if (flags.literal) params.UseLiteralPaperAlgorithm();
   if (flags.no_polish) params.polish = false;

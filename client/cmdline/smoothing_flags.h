@@ -8,13 +8,16 @@
 namespace getme::cmdline {
 
 // The flags that select the engine's parameters, as `getme smooth` spells them: --method,
-// --threads, --max-iterations, --free-boundary, --literal, --no-untangle, --untangle-boundary,
-// --no-polish. getme-bench takes a subset with the same meaning.
+// --threads, --max-iterations, --boundary (and its spelling --free-boundary), --feature-angle,
+// --literal, --no-untangle, --untangle-boundary, --no-polish. getme-bench takes a subset with the
+// same meaning.
 struct SmoothingFlags {
   Method method = Method::kGetme;
   int threads = 0;  // 0 = all cores
   std::optional<std::int64_t> max_iterations;
   bool free_boundary = false;
+  bool slide_boundary = false;  // --boundary slide (issue 15)
+  double feature_angle_degrees = 45.0;
   bool literal = false;            // the paper's literal algorithm, safeguards off
   bool no_untangle = false;        // refuse invalid input instead of untangling it
   bool no_polish = false;          // end --method getme after the sequential substep

@@ -35,8 +35,8 @@ std::string SmoothResultJson(const SmoothReport& report) {
                         .Build());
   }
   phases += "]";
-  return JsonObject()
-      .AddString("event", "result")
+  JsonObject object;
+  object.AddString("event", "result")
       .AddInt("nodes", report.nodes)
       .AddInt("elements", result.after.elements)
       .AddDouble("q_min_before", result.before.q_min)
@@ -55,7 +55,19 @@ std::string SmoothResultJson(const SmoothReport& report) {
       .AddInt("iterations_laplace", result.iterations_laplace)
       .AddInt("iterations_polish", result.iterations_polish)
       .AddRaw("phases", phases)
-      .AddDouble("seconds", result.seconds)
+      .AddString("boundary", report.boundary);
+  if (result.boundary_slide && report.boundary_surface) {
+    object.AddRaw("boundary_slide",
+                  JsonObject()
+                      .AddInt("sliding_nodes", result.boundary_slide->sliding_nodes)
+                      .AddInt("slid_nodes", result.boundary_slide->slid_nodes)
+                      .AddDouble("max_distance", result.boundary_slide->max_distance)
+                      .AddInt("feature_edges", report.boundary_surface->feature_edges)
+                      .AddInt("feature_curves", report.boundary_surface->feature_curves)
+                      .AddInt("corners", report.boundary_surface->corners)
+                      .Build());
+  }
+  return object.AddDouble("seconds", result.seconds)
       .AddInt("threads", result.threads)
       .AddString("method", MethodName(report.method))
       .AddString("input", report.input)

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,13 @@ namespace getme::events {
 
 // What a finished smoothing run reports, in text (summary table) or JSON (result line). Plain
 // data, so the gRPC client can fill it from the wire.
+// The input's boundary surface as `--boundary slide` saw it (surface/, docs/boundary.md).
+struct BoundarySurfaceCounts {
+  std::int64_t feature_edges = 0;
+  std::int64_t feature_curves = 0;
+  std::int64_t corners = 0;
+};
+
 struct SmoothReport {
   std::string input;
   std::string output;
@@ -22,6 +30,8 @@ struct SmoothReport {
   std::array<std::int64_t, kElementTypeCount> elements_by_type{};
   std::int64_t passthrough_cells = 0;
   SmoothingResult result;
+  std::string boundary = "fixed";                         // fixed, free or slide
+  std::optional<BoundarySurfaceCounts> boundary_surface;  // with --boundary slide only
 };
 
 // What `getme quality` reports.

@@ -192,6 +192,65 @@ TEST(CliSmooth, MaxIterationsCapsEveryPhase) {
   std::filesystem::remove(output);
 }
 
+TEST(CliSmooth, BoundarySlideReportsWhatSlidAndLosesNothingOnANearOptimalMesh) {
+  // knowles-mixed-beam.vtk marks no node fixed, so every boundary node but its corners may slide
+  // along its face or feature edge (docs/boundary.md). Near-optimal already, it must get no worse
+  // than with the boundary held (issue 15).
+  const std::string input = std::string(GETME_SHARED_MESHES) + "/su2/knowles-mixed-beam.vtk";
+  const std::string held_output = TempPath("held.vtk");
+  const std::string slid_output = TempPath("slid.vtk");
+  const testing::RunResult held =
+      RunGetme({"smooth", input, held_output, "--json", "--quiet", "--threads", "2"});
+  const testing::RunResult slid = RunGetme(
+      {"smooth", input, slid_output, "--json", "--quiet", "--threads", "2", "--boundary", "slide"});
+  ASSERT_EQ(held.exit_status, 0) << held.err;
+  ASSERT_EQ(slid.exit_status, 0) << slid.err;
+  const JsonValue held_result = JsonLines(held.out).back();
+  const JsonValue slid_result = JsonLines(slid.out).back();
+  EXPECT_EQ(String(held_result, "boundary"), "fixed");
+  EXPECT_EQ(held_result.Find("boundary_slide"), nullptr);
+  EXPECT_EQ(String(slid_result, "boundary"), "slide");
+  const JsonValue* slide = slid_result.Find("boundary_slide");
+  ASSERT_NE(slide, nullptr) << slid.out;
+  EXPECT_GT(Number(*slide, "sliding_nodes"), 0);
+  EXPECT_GT(Number(*slide, "slid_nodes"), 0);
+  EXPECT_LE(Number(*slide, "slid_nodes"), Number(*slide, "sliding_nodes"));
+  EXPECT_GT(Number(*slide, "feature_edges"), 0);
+  EXPECT_GT(Number(*slide, "corners"), 0);
+  EXPECT_LE(Number(*slide, "max_distance"), 1e-9);
+  EXPECT_GE(Number(slid_result, "q_min"), Number(held_result, "q_min"));
+  EXPECT_GE(Number(slid_result, "q_mean"), Number(held_result, "q_mean"));
+  std::filesystem::remove(held_output);
+  std::filesystem::remove(slid_output);
+}
+
+TEST(CliErrors, BoundaryOptionsAreChecked) {
+  const testing::RunResult bad = RunGetme({"smooth", "a.vtk", "b.vtk", "--boundary", "sideways"});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_NE(bad.err.find("--boundary 'sideways': expected fixed, slide or free"), std::string::npos)
+      << bad.err;
+  const testing::RunResult angle_alone =
+      RunGetme({"smooth", "a.vtk", "b.vtk", "--feature-angle", "30"});
+  EXPECT_EQ(angle_alone.exit_status, 2);
+  EXPECT_NE(angle_alone.err.find("--feature-angle only shapes a sliding boundary"),
+            std::string::npos)
+      << angle_alone.err;
+  const testing::RunResult bad_angle =
+      RunGetme({"smooth", "a.vtk", "b.vtk", "--boundary", "slide", "--feature-angle", "200"});
+  EXPECT_EQ(bad_angle.exit_status, 2);
+  EXPECT_NE(bad_angle.err.find("expected degrees in [0, 180]"), std::string::npos) << bad_angle.err;
+  const testing::RunResult both =
+      RunGetme({"smooth", "a.vtk", "b.vtk", "--free-boundary", "--boundary", "slide"});
+  EXPECT_EQ(both.exit_status, 2);
+  EXPECT_NE(both.err.find("contradict"), std::string::npos) << both.err;
+  // The service cannot slide yet: refused before any connection, not silently held.
+  const testing::RunResult remote =
+      RunGetme({"smooth", "a.vtk", "b.vtk", "--boundary", "slide", "--server", "127.0.0.1:1"});
+  EXPECT_EQ(remote.exit_status, 2);
+  EXPECT_NE(remote.err.find("the service cannot slide boundary nodes yet"), std::string::npos)
+      << remote.err;
+}
+
 TEST(CliQuality, JsonReportsTheMixedMesh) {
   const testing::RunResult run =
       RunGetme({"quality", SharedMesh("mixed-hex-pyr-tet.vtk"), "--json", "--bins", "7"});

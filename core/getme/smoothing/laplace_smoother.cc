@@ -43,18 +43,21 @@ absl::StatusOr<PhaseSummary> RunLaplace(SmoothingContext& context) {
       cancelled = true;
       break;
     }
-    context.pool.ParallelFor(mesh.node_count(), kNodeGrain,
-                             [&](std::int64_t begin, std::int64_t end) {
-                               for (std::int64_t node = begin; node < end; ++node) {
-                                 Point p{mesh.x()[node], mesh.y()[node], mesh.z()[node]};
-                                 if (context.movable[node] && neighbours.Row(node).size() > 0) {
-                                   p = NeighbourMean(mesh, neighbours, static_cast<NodeId>(node));
-                                 }
-                                 next_x[node] = p.x;
-                                 next_y[node] = p.y;
-                                 next_z[node] = p.z;
-                               }
-                             });
+    context.pool.ParallelFor(
+        mesh.node_count(), kNodeGrain, [&](std::int64_t begin, std::int64_t end) {
+          for (std::int64_t node = begin; node < end; ++node) {
+            Point p{mesh.x()[node], mesh.y()[node], mesh.z()[node]};
+            if (context.movable[node] && neighbours.Row(node).size() > 0) {
+              const auto id = static_cast<NodeId>(node);
+              const Point mean = NeighbourMean(mesh, neighbours, id);
+              const Vec3 placed = context.Placed(id, Vec3(mean.x, mean.y, mean.z));
+              p = {placed[0], placed[1], placed[2]};
+            }
+            next_x[node] = p.x;
+            next_y[node] = p.y;
+            next_z[node] = p.z;
+          }
+        });
     std::copy(next_x.begin(), next_x.end(), mesh.x().begin());
     std::copy(next_y.begin(), next_y.end(), mesh.y().begin());
     std::copy(next_z.begin(), next_z.end(), mesh.z().begin());
@@ -95,10 +98,11 @@ absl::StatusOr<PhaseSummary> RunSmartLaplace(SmoothingContext& context) {
       double old_sum = 0.0;
       for (ElementId e : elements) old_sum += context.quality[e];
       const Point old_position{x[node], y[node], z[node]};
-      const Point target = NeighbourMean(mesh, neighbours, node);
-      x[node] = target.x;
-      y[node] = target.y;
-      z[node] = target.z;
+      const Point mean = NeighbourMean(mesh, neighbours, node);
+      const Vec3 target = context.Placed(node, Vec3(mean.x, mean.y, mean.z));
+      x[node] = target[0];
+      y[node] = target[1];
+      z[node] = target[2];
       candidate_quality.clear();
       double new_sum = 0.0;
       bool valid = true;

@@ -202,7 +202,8 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   // of a thin stack), then the plain step, then halvings.
   double alpha = context.params.polish_over_relaxation;
   for (int attempt = -1; attempt <= context.params.polish_backtracking_steps; ++attempt) {
-    const Vec3 trial = start + alpha * d;
+    // A sliding boundary node's step goes back onto its surface before it is judged.
+    const Vec3 trial = context.Placed(node, start + alpha * d);
     x[node] = trial[0];
     y[node] = trial[1];
     z[node] = trial[2];

@@ -2,10 +2,12 @@
 
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "getme/elements/vec3.h"
 
 namespace getme {
 namespace {
@@ -21,7 +23,20 @@ std::string Coordinates(double x, double y, double z) {
 
 }  // namespace
 
-ResultCheck::ResultCheck(const Mesh& mesh, std::span<const std::uint8_t> movable) {
+ResultCheck::ResultCheck(const Mesh& mesh, std::span<const std::uint8_t> movable,
+                         const BoundarySlide* slide, std::span<const std::uint8_t> sliding)
+    : slide_(slide) {
+  if (slide != nullptr) {
+    Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 high = -low;
+    for (std::int64_t i = 0; i < mesh.node_count(); ++i) {
+      const Vec3 p(mesh.x()[i], mesh.y()[i], mesh.z()[i]);
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+      if (!sliding.empty() && sliding[i]) sliding_.push_back(static_cast<NodeId>(i));
+    }
+    surface_tolerance_ = 1e-9 * (high - low).norm();
+  }
   for (std::int64_t i = 0; i < mesh.node_count(); ++i) {
     if (movable[i]) continue;
     immovable_.push_back(static_cast<NodeId>(i));
@@ -48,6 +63,16 @@ absl::Status ResultCheck::Check(const Mesh& mesh, const MeshQuality& after) cons
       return absl::InternalError(absl::StrCat("result check: fixed node ", node, " moved from ",
                                               Coordinates(x_[k], y_[k], z_[k]), " to ",
                                               Coordinates(x[node], y[node], z[node])));
+    }
+  }
+  for (NodeId node : sliding_) {
+    const Vec3 p(x[node], y[node], z[node]);
+    const double distance = slide_->DistanceToSurface(p);
+    if (!(distance <= surface_tolerance_)) {
+      return absl::InternalError(
+          absl::StrCat("result check: sliding boundary node ", node, " at ",
+                       Coordinates(p[0], p[1], p[2]), " is ", distance,
+                       " from the input's boundary surface (allowed: ", surface_tolerance_, ")"));
     }
   }
   if (after.invalid > 0) {

@@ -139,9 +139,12 @@ std::int64_t SequentialSubstep::TransformWorst() {
     for (std::size_t i = 0; i < pick_target_.size(); ++i) {
       const NodeBackup& from = pick_backup_[i];
       const NodeBackup& to = pick_target_[i];
-      x[from.node] = from.x + fraction * (to.x - from.x);
-      y[from.node] = from.y + fraction * (to.y - from.y);
-      z[from.node] = from.z + fraction * (to.z - from.z);
+      const Vec3 placed = context_.Placed(
+          from.node, Vec3(from.x + fraction * (to.x - from.x), from.y + fraction * (to.y - from.y),
+                          from.z + fraction * (to.z - from.z)));
+      x[from.node] = placed[0];
+      y[from.node] = placed[1];
+      z[from.node] = placed[2];
     }
     valid = true;
     for (std::size_t i = 0; i < affected_.size() && valid; ++i) {

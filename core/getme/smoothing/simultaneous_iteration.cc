@@ -124,9 +124,11 @@ void SimultaneousIteration::UpdateNodeRange(SmoothingContext& context, std::int6
     }
     // Σ w_j = 0: all adjacent elements are regular, the node is already optimal (Sec. 3.1).
     if (sw > 0.0) {
-      x[node] = sx / sw;
-      y[node] = sy / sw;
-      z[node] = sz / sw;
+      const Vec3 placed =
+          context.Placed(static_cast<NodeId>(node), Vec3(sx / sw, sy / sw, sz / sw));
+      x[node] = placed[0];
+      y[node] = placed[1];
+      z[node] = placed[2];
     }
   }
 }
@@ -179,6 +181,14 @@ std::int64_t SimultaneousIteration::RepairInvalid(SmoothingContext& context) {
       x[node] = previous_.x[node] + keep * (state.new_x - previous_.x[node]);
       y[node] = previous_.y[node] + keep * (state.new_y - previous_.y[node]);
       z[node] = previous_.z[node] + keep * (state.new_z - previous_.z[node]);
+      // A sliding node's part-way point is off a curved surface: back onto it. Not at keep = 0,
+      // where the node must be exactly at p_old for the repair to end with a valid element.
+      if (keep > 0.0 && context.sliding[node]) {
+        const Vec3 placed = context.Placed(node, Vec3(x[node], y[node], z[node]));
+        x[node] = placed[0];
+        y[node] = placed[1];
+        z[node] = placed[2];
+      }
       if (keep == 0.0) state.halvings = max_halvings + 1;
       const auto elements = mesh.node_elements(node);
       recheck.insert(recheck.end(), elements.begin(), elements.end());

@@ -1,9 +1,12 @@
 #include "getme/smoothing/smoother.h"
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
+#include "getme/elements/vec3.h"
 #include "getme/smoothing/laplace_smoother.h"
 #include "getme/smoothing/polish.h"
 #include "getme/smoothing/result_check.h"
@@ -112,21 +115,48 @@ absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
 
 absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params,
                                        const ProgressCallback& progress,
-                                       const CancellationToken* cancel) {
+                                       const CancellationToken* cancel,
+                                       const BoundarySlide* slide) {
   if (auto status = params.Validate(); !status.ok()) return status;
+  if (params.slide_boundary && slide == nullptr) {
+    return absl::InvalidArgumentError(
+        "slide_boundary is set but no BoundarySlide was given: build one from the input mesh "
+        "(surface::SurfaceSlide) and pass it to Smooth");
+  }
+  if (!params.slide_boundary) slide = nullptr;
   ThreadPool pool(params.threads);
   SmoothingResult result;
   result.threads = pool.thread_count();
   result.before = EvaluateMeshQuality(mesh, pool);
-  SmoothingContext context(mesh, params, pool, progress, cancel);
+  SmoothingContext context(mesh, params, pool, progress, cancel, slide);
   // Untangling with untangle_free_boundary may move boundary nodes of invalid elements: the check
   // must expect exactly those to move, and no other immovable node.
   const bool untangles =
       params.method != Method::kLaplace && params.untangle && result.before.invalid > 0;
   const ResultCheck check(
-      mesh, untangles ? UntangleMovable(mesh, params, context.movable, context.quality)
-                      : context.movable);
+      mesh,
+      untangles ? UntangleMovable(mesh, params, context.movable, context.quality) : context.movable,
+      slide, context.sliding);
+  // The sliding nodes' input positions, to count the ones that moved.
+  std::vector<std::pair<NodeId, Vec3>> slide_start;
+  if (slide != nullptr) {
+    for (NodeId node = 0; node < mesh.node_count(); ++node) {
+      if (context.sliding[node]) {
+        slide_start.emplace_back(node, Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]));
+      }
+    }
+  }
   if (auto status = RunPhases(context, result); !status.ok()) return status;
+  if (slide != nullptr) {
+    BoundarySlideSummary summary;
+    summary.sliding_nodes = static_cast<std::int64_t>(slide_start.size());
+    for (const auto& [node, start] : slide_start) {
+      const Vec3 now(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
+      if (now != start) ++summary.slid_nodes;
+      summary.max_distance = std::max(summary.max_distance, slide->DistanceToSurface(now));
+    }
+    result.boundary_slide = summary;
+  }
   result.after = EvaluateMeshQuality(mesh, pool);
   result.seconds = context.ElapsedSeconds();
   if (params.method == Method::kLaplace && result.after.invalid > 0) {

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "absl/status/statusor.h"
 #include "getme/mesh/mesh.h"
 #include "getme/mesh/mesh_quality.h"
+#include "getme/smoothing/boundary_slide.h"
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoothing_params.h"
 
@@ -20,6 +22,13 @@ struct PhaseSummary {
   std::int64_t reverted_nodes = 0;
 };
 
+// What a sliding boundary did (SmoothingParams::slide_boundary, issue 15).
+struct BoundarySlideSummary {
+  std::int64_t sliding_nodes = 0;  // boundary nodes that could slide (not corners, not fixed)
+  std::int64_t slid_nodes = 0;     // of those, the ones that moved
+  double max_distance = 0.0;       // the largest distance of one from the input's surface
+};
+
 struct SmoothingResult {
   MeshQuality before;
   MeshQuality after;
@@ -31,6 +40,7 @@ struct SmoothingResult {
   std::int64_t iterations_polish = 0;  // sweeps over the free nodes (SmoothingParams::polish)
   double seconds = 0.0;
   int threads = 1;
+  std::optional<BoundarySlideSummary> boundary_slide;  // with a sliding boundary only
 };
 
 // Smooths the free nodes of `mesh` in place with params.method. Invalid input is untangled first
@@ -40,8 +50,12 @@ struct SmoothingResult {
 // finite, `after` its quality; a result failing it is returned as Internal, never as success.
 // Plain Laplace (Method::kLaplace) may invert elements: that is FailedPrecondition, naming them.
 // After any error but Cancelled the mesh holds no result and must not be used.
+// With `slide`, the boundary nodes it says slide move along the input's surface instead of
+// staying fixed (params.fix_boundary; boundary_slide.h); the result check then also checks that
+// each lies on the surface. Without it (the default) nothing changes.
 absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params,
                                        const ProgressCallback& progress = {},
-                                       const CancellationToken* cancel = nullptr);
+                                       const CancellationToken* cancel = nullptr,
+                                       const BoundarySlide* slide = nullptr);
 
 }  // namespace getme

@@ -8,17 +8,22 @@
 namespace getme {
 SmoothingContext::SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in,
                                    ThreadPool& pool_in, const ProgressCallback& progress_in,
-                                   const CancellationToken* cancel_in)
+                                   const CancellationToken* cancel_in,
+                                   const BoundarySlide* slide_in)
     : mesh(mesh_in),
       params(params_in),
       pool(pool_in),
       progress(progress_in),
       cancel(cancel_in),
-      start(std::chrono::steady_clock::now()) {
+      start(std::chrono::steady_clock::now()),
+      slide(slide_in) {
   movable.resize(mesh.node_count());
+  sliding.assign(mesh.node_count(), 0);
   for (std::int64_t i = 0; i < mesh.node_count(); ++i) {
     const auto node = static_cast<NodeId>(i);
-    movable[i] = !mesh.is_fixed(node) && !(params.fix_boundary && mesh.is_boundary(node)) ? 1 : 0;
+    const bool held_boundary = params.fix_boundary && mesh.is_boundary(node);
+    sliding[i] = !mesh.is_fixed(node) && held_boundary && slide != nullptr && slide->Slides(node);
+    movable[i] = !mesh.is_fixed(node) && (!held_boundary || sliding[i]) ? 1 : 0;
   }
   RefreshQuality();
 }

@@ -5,9 +5,11 @@
 #include <vector>
 
 #include "getme/elements/element_quality.h"
+#include "getme/elements/vec3.h"
 #include "getme/mesh/mesh.h"
 #include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
+#include "getme/smoothing/boundary_slide.h"
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoother.h"
 #include "getme/smoothing/smoothing_params.h"
@@ -18,8 +20,10 @@ namespace getme {
 // per-element quality (kept up to date by each phase so the next one need not recompute it),
 // progress reporting and cancellation.
 struct SmoothingContext {
+  // With `slide`, boundary nodes it says slide are movable too (boundary_slide.h).
   SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in, ThreadPool& pool_in,
-                   const ProgressCallback& progress_in, const CancellationToken* cancel_in);
+                   const ProgressCallback& progress_in, const CancellationToken* cancel_in,
+                   const BoundarySlide* slide_in = nullptr);
 
   Mesh& mesh;
   const SmoothingParams& params;
@@ -27,12 +31,21 @@ struct SmoothingContext {
   const ProgressCallback& progress;
   const CancellationToken* cancel;
   std::chrono::steady_clock::time_point start;
-  // 1 for nodes the smoothers may move: not caller-fixed, and not boundary if fix_boundary.
+  const BoundarySlide* slide;
+  // 1 for nodes the smoothers may move: not caller-fixed, and not boundary if fix_boundary
+  // unless it slides.
   std::vector<std::uint8_t> movable;
+  // 1 for the boundary nodes that slide on the input's surface (a subset of movable).
+  std::vector<std::uint8_t> sliding;
   // Per element: mean ratio in [0, 1], or kInvalidQuality for an invalid element.
   std::vector<double> quality;
 
   double ElapsedSeconds() const;
+  // Where a smoother that put `node` at `point` must put it: on its surface for a sliding node,
+  // `point` itself for any other. Every phase passes each new position through this.
+  Vec3 Placed(NodeId node, const Vec3& point) const {
+    return sliding[node] ? slide->Project(node, point) : point;
+  }
   bool Cancelled() const { return cancel != nullptr && cancel->cancelled(); }
   void Report(const ProgressEvent& event) const {
     if (progress) progress(event);

@@ -142,6 +142,14 @@ absl::Status SmoothingParams::Validate() const {
   if (!(polish_cluster_exponent >= 1.0 && polish_cluster_exponent <= 64.0)) {
     return OutOfRange("polish_cluster_exponent", polish_cluster_exponent, "in [1, 64]");
   }
+  if (!(feature_angle_degrees >= 0.0 && feature_angle_degrees <= 180.0)) {
+    return OutOfRange("feature_angle_degrees", feature_angle_degrees, "in [0, 180]");
+  }
+  if (slide_boundary && !fix_boundary) {
+    return absl::InvalidArgumentError(
+        "slide_boundary needs the boundary held (fix_boundary): a free boundary has no surface to "
+        "slide on; choose one of the two");
+  }
   if (!(polish_over_relaxation >= 1.0 && polish_over_relaxation < 2.0)) {
     return OutOfRange("polish_over_relaxation", polish_over_relaxation, "in [1, 2)");
   }

@@ -149,7 +149,15 @@ struct SmoothingParams {
 
   // --- Nodes and threads ---
   bool fix_boundary = true;  // Sec. 3: boundary nodes stay fixed
-  int threads = 0;           // 0 = hardware concurrency; results do not depend on it
+  // Issue 15: boundary nodes slide on the input's own surface instead (surface and feature nodes;
+  // corners stay). Smooth() then needs a BoundarySlide built from the input (boundary_slide.h;
+  // the CLI builds it with surface/). Requires fix_boundary: a free boundary has nothing to slide
+  // on. Off by default, as the paper keeps the boundary (Sec. 3).
+  bool slide_boundary = false;
+  // The angle between two boundary faces' normals above which their edge is a feature edge, along
+  // which nodes slide only (docs/boundary.md: why 45). Used by whoever builds the BoundarySlide.
+  double feature_angle_degrees = 45.0;
+  int threads = 0;  // 0 = hardware concurrency; results do not depend on it
 
   absl::Status Validate() const;
 

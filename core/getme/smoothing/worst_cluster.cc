@@ -288,7 +288,9 @@ Cluster FindCluster(const SmoothingContext& context, double q_min, std::vector<i
     if (q > limit) continue;
     bool any_free = false;
     for (NodeId node : mesh.element_nodes(e)) {
-      if (!context.movable[node]) continue;
+      // Sliding boundary nodes stay: L-BFGS moves nodes freely in space, and a projection after
+      // each step would break its line search.
+      if (!context.movable[node] || context.sliding[node]) continue;
       any_free = true;
       if (variable_of[node] < 0) {
         variable_of[node] = 0;
