@@ -98,6 +98,17 @@ ElementNodes<kType> Moved(ElementNodes<kType> p, int node, const Vec3& delta) {
   return p;
 }
 
+// The gradient of f with respect to node `node` by central differences of step h.
+template <ElementType kType, typename F>
+Vec3 CentralDifferences(F f, const ElementNodes<kType>& p, int node, double h) {
+  Vec3 difference;
+  for (int j = 0; j < 3; ++j) {
+    const Vec3 step = h * Vec3::Unit(j);
+    difference[j] = (f(Moved<kType>(p, node, step)) - f(Moved<kType>(p, node, -step))) / (2.0 * h);
+  }
+  return difference;
+}
+
 // The regular element with every node displaced uniformly in [−amplitude, amplitude]³ (edges are
 // 1), redrawn until valid: distorted elements of moderate quality, next to the paper's random
 // elements in the unit cube (UnitRandom), many of which are nearly flat.
@@ -169,13 +180,8 @@ TYPED_TEST(MeanRatioDerivativesTest, GradientMatchesCentralDifferencesOfTheCost)
       ASSERT_EQ(result.cost, cost);
       const double d = BarrierDistance(kType, ToPoints<kType>(p), node);
       const double h = kGradientStepFraction * d;
-      Vec3 difference;
-      for (int j = 0; j < 3; ++j) {
-        const Vec3 step = h * Vec3::Unit(j);
-        difference[j] = (InverseMeanRatioCost<kType>(Moved<kType>(p, node, step)) -
-                         InverseMeanRatioCost<kType>(Moved<kType>(p, node, -step))) /
-                        (2.0 * h);
-      }
+      const Vec3 difference = CentralDifferences<kType>(
+          [](const ElementNodes<kType>& q) { return InverseMeanRatioCost<kType>(q); }, p, node, h);
       const double error = (difference - result.gradient).norm() / (cost / d);
       const double tolerance = GradientTolerance(condition);
       worst = std::max(worst, error / tolerance);
@@ -498,13 +504,8 @@ TYPED_TEST(MeanRatioDerivativesTest, MeanRatioGradientMatchesCentralDifferencesO
     for (int node = 0; node < NodeCount(kType); ++node) {
       const double d = BarrierDistance(kType, ToPoints<kType>(p), node);
       const double h = kGradientStepFraction * d;
-      Vec3 difference;
-      for (int j = 0; j < 3; ++j) {
-        const Vec3 step = h * Vec3::Unit(j);
-        difference[j] = (MeanRatio<kType>(Moved<kType>(p, node, step)) -
-                         MeanRatio<kType>(Moved<kType>(p, node, -step))) /
-                        (2.0 * h);
-      }
+      const Vec3 difference = CentralDifferences<kType>(
+          [](const ElementNodes<kType>& q) { return MeanRatio<kType>(q); }, p, node, h);
       const double error = (difference - result.gradient[node]).norm() * d;
       const double tolerance = GradientTolerance(condition);
       worst = std::max(worst, error / tolerance);

@@ -57,12 +57,7 @@ TEST(PinnedArteryTest, ThePolishLiftsTheThinLayersWithTheWholeBoundaryFixed) {
       << "without the polish " << plain->after.q_min;
   EXPECT_GE(polished->after.q_mean, plain->after.q_mean);
   EXPECT_EQ(testing::CountInvalid(polished_mesh), 0);
-  const testing::CoordinateSnapshot after(polished_mesh);
-  for (NodeId node : immovable) {
-    ASSERT_EQ(after.x[node], original.x[node]) << "boundary node " << node << " moved";
-    ASSERT_EQ(after.y[node], original.y[node]) << "boundary node " << node << " moved";
-    ASSERT_EQ(after.z[node], original.z[node]) << "boundary node " << node << " moved";
-  }
+  testing::ExpectUnmoved(original, polished_mesh, immovable);
 }
 
 TEST(PinnedArteryTest, TheWorstClusterStageLiftsThePinnedCapPlateau) {

@@ -19,22 +19,6 @@
 namespace getme {
 namespace {
 
-struct NamedMesh {
-  std::string name;
-  std::function<absl::StatusOr<Mesh>()> make;
-};
-
-std::vector<NamedMesh> RandomMeshes() {
-  std::vector<NamedMesh> meshes;
-  for (std::uint64_t seed : {3, 17, 29}) {
-    meshes.push_back({"hybrid_" + std::to_string(seed),
-                      [seed] { return meshgen::HybridBlock(6, 6, 5, 0.35, seed); }});
-    meshes.push_back({"distorted_hex_" + std::to_string(seed),
-                      [seed] { return meshgen::DistortedHexBlock(6, 6, 6, 0.35, seed); }});
-  }
-  return meshes;
-}
-
 // GETMe cut short, so the polish works on a mesh that is still distorted, and a polish of many
 // sweeps: the property must hold wherever the stage starts.
 SmoothingParams ShortGetme(bool polish, bool fix_boundary) {
@@ -48,19 +32,15 @@ SmoothingParams ShortGetme(bool polish, bool fix_boundary) {
   return params;
 }
 
-void FixSomeInteriorNodes(Mesh& mesh) {
-  for (NodeId node = 0; node < mesh.node_count(); node += 7) mesh.set_fixed(node, true);
-}
-
 TEST(PolishTest, NeverLowersQMinNeverInvertsKeepsFixedNodesAndRaisesQMean) {
-  for (const NamedMesh& named : RandomMeshes()) {
+  for (const testing::NamedMesh& named : testing::DistortedBlocks(6, {3, 17, 29})) {
     for (bool fix_boundary : {true, false}) {
       SCOPED_TRACE(named.name + (fix_boundary ? " fixed boundary" : " free boundary"));
       auto without = named.make();
       auto with = named.make();
       ASSERT_TRUE(without.ok() && with.ok());
-      FixSomeInteriorNodes(*without);
-      FixSomeInteriorNodes(*with);
+      testing::FixSomeInteriorNodes(*without);
+      testing::FixSomeInteriorNodes(*with);
       const testing::CoordinateSnapshot original(*with);
       auto plain = Smooth(*without, ShortGetme(false, fix_boundary));
       auto polished = Smooth(*with, ShortGetme(true, fix_boundary));
@@ -74,13 +54,8 @@ TEST(PolishTest, NeverLowersQMinNeverInvertsKeepsFixedNodesAndRaisesQMean) {
       EXPECT_GT(polished->after.q_mean, plain->after.q_mean + 1e-3);
       EXPECT_EQ(polished->after.invalid, 0);
       EXPECT_EQ(testing::CountInvalid(*with), 0);
-      const testing::CoordinateSnapshot after(*with);
-      SmoothingParams params = ShortGetme(true, fix_boundary);
-      for (NodeId node : testing::ImmovableNodes(*with, params)) {
-        EXPECT_EQ(after.x[node], original.x[node]) << "node " << node;
-        EXPECT_EQ(after.y[node], original.y[node]) << "node " << node;
-        EXPECT_EQ(after.z[node], original.z[node]) << "node " << node;
-      }
+      testing::ExpectUnmoved(original, *with,
+                             testing::ImmovableNodes(*with, ShortGetme(true, fix_boundary)));
     }
   }
 }

@@ -5,6 +5,8 @@
 #include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "getme/elements/element_quality.h"
+#include "getme/meshgen/distorted_hex_block.h"
+#include "getme/meshgen/hybrid_block.h"
 
 namespace getme::testing {
 
@@ -75,6 +77,31 @@ void ExpectSameForEveryThreadCount(const std::vector<ThreadCountRun>& runs,
     EXPECT_EQ(run.result.after.q_mean, runs[0].result.after.q_mean);
     EXPECT_EQ(run.result.after.q_min, runs[0].result.after.q_min);
   }
+}
+
+void ExpectUnmoved(const CoordinateSnapshot& before, const Mesh& mesh,
+                   const std::vector<NodeId>& nodes) {
+  const CoordinateSnapshot after(mesh);
+  for (NodeId node : nodes) {
+    ASSERT_EQ(after.x[node], before.x[node]) << "node " << node << " moved";
+    ASSERT_EQ(after.y[node], before.y[node]) << "node " << node << " moved";
+    ASSERT_EQ(after.z[node], before.z[node]) << "node " << node << " moved";
+  }
+}
+
+std::vector<NamedMesh> DistortedBlocks(int n, std::initializer_list<std::uint64_t> seeds) {
+  std::vector<NamedMesh> meshes;
+  for (std::uint64_t seed : seeds) {
+    meshes.push_back({"hybrid_" + std::to_string(seed),
+                      [n, seed] { return meshgen::HybridBlock(n, n, n - 1, 0.35, seed); }});
+    meshes.push_back({"distorted_hex_" + std::to_string(seed),
+                      [n, seed] { return meshgen::DistortedHexBlock(n, n, n, 0.35, seed); }});
+  }
+  return meshes;
+}
+
+void FixSomeInteriorNodes(Mesh& mesh) {
+  for (NodeId node = 0; node < mesh.node_count(); node += 7) mesh.set_fixed(node, true);
 }
 
 }  // namespace getme::testing

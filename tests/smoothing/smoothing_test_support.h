@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
 #include <string>
@@ -40,7 +41,25 @@ void ExpectSameForEveryThreadCount(const std::vector<ThreadCountRun>& runs,
 // Nodes a smoother must leave untouched under `params`: caller-fixed, or boundary if fix_boundary.
 std::vector<NodeId> ImmovableNodes(const Mesh& mesh, const SmoothingParams& params);
 
+// Fails the test, naming the first node, unless every one of `nodes` has its `before`
+// coordinates in `mesh` bit for bit.
+void ExpectUnmoved(const CoordinateSnapshot& before, const Mesh& mesh,
+                   const std::vector<NodeId>& nodes);
+
 // Invalid elements recounted from scratch with the Def. 2 kernel.
 std::int64_t CountInvalid(const Mesh& mesh);
+
+// A generated mesh by name, made afresh on each call (property tests smooth two copies).
+struct NamedMesh {
+  std::string name;
+  std::function<absl::StatusOr<Mesh>()> make;
+};
+
+// For each seed, a hybrid block of n × n × (n − 1) cells and a hexahedral block of n × n × n cells,
+// interior nodes displaced by 0.35 of a cell: distorted meshes of every element type.
+std::vector<NamedMesh> DistortedBlocks(int n, std::initializer_list<std::uint64_t> seeds);
+
+// Marks every seventh node fixed, as a caller's `fixed` array would.
+void FixSomeInteriorNodes(Mesh& mesh);
 
 }  // namespace getme::testing

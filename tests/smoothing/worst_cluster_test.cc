@@ -23,22 +23,6 @@
 namespace getme {
 namespace {
 
-struct NamedMesh {
-  std::string name;
-  std::function<absl::StatusOr<Mesh>()> make;
-};
-
-std::vector<NamedMesh> DistortedMeshes() {
-  std::vector<NamedMesh> meshes;
-  for (std::uint64_t seed : {5, 23}) {
-    meshes.push_back({"hybrid_" + std::to_string(seed),
-                      [seed] { return meshgen::HybridBlock(5, 5, 4, 0.35, seed); }});
-    meshes.push_back({"distorted_hex_" + std::to_string(seed),
-                      [seed] { return meshgen::DistortedHexBlock(5, 5, 5, 0.35, seed); }});
-  }
-  return meshes;
-}
-
 struct StageRun {
   SmoothingContext::Summary before;
   SmoothingContext::Summary after;
@@ -63,17 +47,13 @@ StageRun RunStage(Mesh& mesh, const SmoothingParams& params, int threads) {
   return run;
 }
 
-void FixSomeInteriorNodes(Mesh& mesh) {
-  for (NodeId node = 0; node < mesh.node_count(); node += 7) mesh.set_fixed(node, true);
-}
-
 TEST(WorstClusterTest, LiftsQMinNeverInvertsAndKeepsImmovableNodesAndExactQualities) {
-  for (const NamedMesh& named : DistortedMeshes()) {
+  for (const testing::NamedMesh& named : testing::DistortedBlocks(5, {5, 23})) {
     for (bool fix_boundary : {true, false}) {
       SCOPED_TRACE(named.name + (fix_boundary ? " fixed boundary" : " free boundary"));
       auto mesh = named.make();
       ASSERT_TRUE(mesh.ok()) << mesh.status();
-      FixSomeInteriorNodes(*mesh);
+      testing::FixSomeInteriorNodes(*mesh);
       SmoothingParams params;
       params.fix_boundary = fix_boundary;
       const testing::CoordinateSnapshot original(*mesh);
@@ -88,12 +68,7 @@ TEST(WorstClusterTest, LiftsQMinNeverInvertsAndKeepsImmovableNodesAndExactQualit
       for (ElementId e = 0; e < mesh->element_count(); ++e) {
         ASSERT_EQ(run.quality[e], ElementQualityOrInvalid(*mesh, e)) << "element " << e;
       }
-      const testing::CoordinateSnapshot after(*mesh);
-      for (NodeId node : testing::ImmovableNodes(*mesh, params)) {
-        ASSERT_EQ(after.x[node], original.x[node]) << "node " << node;
-        ASSERT_EQ(after.y[node], original.y[node]) << "node " << node;
-        ASSERT_EQ(after.z[node], original.z[node]) << "node " << node;
-      }
+      testing::ExpectUnmoved(original, *mesh, testing::ImmovableNodes(*mesh, params));
     }
   }
 }

@@ -66,6 +66,38 @@ struct InverseMeanRatioHessianResult {
 
 namespace internal {
 
+// One node tetrahedron T_k = (t_0, t_1, t_2, t_3) of an element: its edges from t_0, d1 × d2, the
+// columns of S = D W⁻¹, det S and |S|_F², formed in the order MeanRatioOrInvalid forms them
+// (element_quality.h), so every kernel built on it has the same bits.
+struct NodeTetFrame {
+  Vec3 d0, d1, d2, d1xd2;
+  Vec3 s0, s1, s2;
+  double det_s = 0.0;
+  double frobenius2 = 0.0;
+};
+
+// False, with `f` only partly set, where the node tetrahedron is not positively oriented (or a
+// coordinate is NaN): the element is invalid (Def. 2).
+template <ElementType kType>
+inline bool MakeNodeTetFrame(const ElementNodes<kType>& p, const NodeTetIndices& t,
+                             NodeTetFrame& f) {
+  constexpr auto& w = ElementTable<kType>::kTargetInverse;
+  // The columns of S below and det S = det D · w00 w11 w22 rely on W⁻¹ being upper triangular.
+  static_assert(w[1][0] == 0.0 && w[2][0] == 0.0 && w[2][1] == 0.0);
+  f.d0 = p[t[1]] - p[t[0]];
+  f.d1 = p[t[2]] - p[t[0]];
+  f.d2 = p[t[3]] - p[t[0]];
+  f.d1xd2 = f.d1.cross(f.d2);
+  const double det_d = f.d0.dot(f.d1xd2);
+  if (!(det_d > 0.0)) return false;
+  f.s0 = f.d0 * w[0][0];
+  f.s1 = f.d0 * w[0][1] + f.d1 * w[1][1];
+  f.s2 = f.d0 * w[0][2] + f.d1 * w[1][2] + f.d2 * w[2][2];
+  f.det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
+  f.frobenius2 = f.s0.squaredNorm() + f.s1.squaredNorm() + f.s2.squaredNorm();
+  return true;
+}
+
 // kOrder 0: cost only; 1: and the gradient; 2: and the Hessian. For an invalid element (Def. 2:
 // some node tetrahedron has det ≤ 0, or a coordinate is NaN) the cost is +∞ — the barrier — and
 // the gradient and Hessian are left zero: they carry no information past the barrier, and a
@@ -76,8 +108,6 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
                                     Eigen::Matrix3d* hessian) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
-  // The columns of S below and det S = det D · w00 w11 w22 rely on W⁻¹ being upper triangular.
-  static_assert(w[1][0] == 0.0 && w[2][0] == 0.0 && w[2][1] == 0.0);
   constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
   constexpr int kTets = static_cast<int>(Table::kNodeTets.size());
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -86,22 +116,13 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
   Vec3 g = Vec3::Zero();
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
   for (const auto& t : Table::kNodeTets) {
-    const Vec3 d0 = p[t[1]] - p[t[0]];
-    const Vec3 d1 = p[t[2]] - p[t[0]];
-    const Vec3 d2 = p[t[3]] - p[t[0]];
-    const Vec3 d1xd2 = d1.cross(d2);
-    const double det_d = d0.dot(d1xd2);
-    if (!(det_d > 0.0)) {
+    NodeTetFrame frame;
+    if (!MakeNodeTetFrame<kType>(p, t, frame)) {
       if constexpr (kOrder >= 1) gradient->setZero();
       if constexpr (kOrder >= 2) hessian->setZero();
       return kInfinity;
     }
-    // Columns of S = D W⁻¹, exactly as MeanRatioOrInvalid forms them (element_quality.h).
-    const Vec3 s0 = d0 * w[0][0];
-    const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const double det_s = det_d * kDetWInverse;
-    const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
+    const auto& [d0, d1, d2, d1xd2, s0, s1, s2, det_s, frobenius2] = frame;
     const double a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
     sum += frobenius2 * a;
     if constexpr (kOrder >= 1) {
@@ -162,21 +183,16 @@ struct InverseMeanRatioCostAndQuality {
 template <ElementType kType>
 inline InverseMeanRatioCostAndQuality CostAndQuality(const ElementNodes<kType>& p) {
   using Table = ElementTable<kType>;
-  constexpr auto& w = Table::kTargetInverse;
   constexpr double kTets = static_cast<double>(Table::kNodeTets.size());
   double cost = 0.0;
   double quality = 0.0;
   for (const auto& t : Table::kNodeTets) {
-    const Vec3 d0 = p[t[1]] - p[t[0]];
-    const Vec3 d1 = p[t[2]] - p[t[0]];
-    const Vec3 d2 = p[t[3]] - p[t[0]];
-    const double det_d = d0.dot(d1.cross(d2));
-    if (!(det_d > 0.0)) return {std::numeric_limits<double>::infinity(), kInvalidQuality};
-    const Vec3 s0 = d0 * w[0][0];
-    const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const double det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
-    const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
+    internal::NodeTetFrame frame;
+    if (!internal::MakeNodeTetFrame<kType>(p, t, frame)) {
+      return {std::numeric_limits<double>::infinity(), kInvalidQuality};
+    }
+    const double det_s = frame.det_s;
+    const double frobenius2 = frame.frobenius2;
     const double root = CubeRoot(det_s * det_s);
     cost += frobenius2 * (1.0 / (3.0 * root));
     quality += 3.0 * root / frobenius2;

@@ -15,6 +15,7 @@
 #include "getme/elements/cube_root.h"
 #include "getme/elements/element_quality.h"
 #include "getme/elements/element_tables.h"
+#include "getme/elements/mean_ratio_derivatives.h"
 #include "getme/elements/vec3.h"
 
 namespace getme {
@@ -33,8 +34,6 @@ inline MeanRatioGradientResult<kType> MeanRatioWithGradient(const ElementNodes<k
                                                             unsigned needed = ~0u) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
-  // The columns of S below and det S = det D · w00 w11 w22 rely on W⁻¹ being upper triangular.
-  static_assert(w[1][0] == 0.0 && w[2][0] == 0.0 && w[2][1] == 0.0);
   constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
   constexpr double kInverseTets = 1.0 / static_cast<double>(Table::kNodeTets.size());
   // Row m of E W⁻¹ for the tetrahedron's corners m = 0..3 (E's rows: (−1, −1, −1), e_1ᵗ, e_2ᵗ,
@@ -48,22 +47,14 @@ inline MeanRatioGradientResult<kType> MeanRatioWithGradient(const ElementNodes<k
   for (Vec3& g : result.gradient) g.setZero();
   double quality = 0.0;
   for (const auto& t : Table::kNodeTets) {
-    const Vec3 d0 = p[t[1]] - p[t[0]];
-    const Vec3 d1 = p[t[2]] - p[t[0]];
-    const Vec3 d2 = p[t[3]] - p[t[0]];
-    const Vec3 d1xd2 = d1.cross(d2);
-    const Vec3 d2xd0 = d2.cross(d0);
-    const Vec3 d0xd1 = d0.cross(d1);
-    const double det_d = d0.dot(d1xd2);
-    if (!(det_d > 0.0)) {
+    internal::NodeTetFrame frame;
+    if (!internal::MakeNodeTetFrame<kType>(p, t, frame)) {
       for (Vec3& g : result.gradient) g.setZero();
       return result;
     }
-    const Vec3 s0 = d0 * w[0][0];
-    const Vec3 s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Vec3 s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const double det_s = det_d * kDetWInverse;
-    const double frobenius2 = s0.squaredNorm() + s1.squaredNorm() + s2.squaredNorm();
+    const auto& [d0, d1, d2, d1xd2, s0, s1, s2, det_s, frobenius2] = frame;
+    const Vec3 d2xd0 = d2.cross(d0);
+    const Vec3 d0xd1 = d0.cross(d1);
     const double root = CubeRoot(det_s * det_s);
     const double q_k = 3.0 * root / frobenius2;
     quality += q_k;
