@@ -21,7 +21,9 @@ def run(files):
 clean = run({"core/getme/mesh/mesh.h": '#include "getme/elements/element_type.h"\n',
              "wire/getme_wire/a.cc": '#include "getme/v1/mesh.pb.h"\n#include "getme/mesh/mesh.h"\n',
              "server/getme_server/b.cc": '#include "getme_wire/status.h"\n',
-             "client/remote/c.cc": '#include "getme_wire/status.h"\n#include "formats/x.h"\n'})
+             "client/remote/c.cc": '#include "getme_wire/status.h"\n#include "formats/x.h"\n',
+             "core/getme/elements/e.h": '#include <Eigen/Core>\n',
+             "surface/getme_surface/s.cc": '#include "getme/mesh/mesh.h"\n#include <CGAL/AABB_tree.h>\n'})
 assert clean.returncode == 0, clean.stdout
 
 cases = {
@@ -29,6 +31,10 @@ cases = {
     "wire/getme_wire/a.cc": ('\n#include "remote/grid_upload.h"\n', "wire/getme_wire/a.cc:2"),
     "server/getme_server/b.cc": ('#include "cli/failure.h"\n', "server/ must not include"),
     "client/cli/c.cc": ('#include "getme_server/job.h"\n', "client/ must not include"),
+    # Library headers come in brackets: the engine must not reach CGAL, whose home is surface/.
+    "core/getme/smoothing/s.cc": ('#include <CGAL/AABB_tree.h>\n',
+                                  'core/ must not include "CGAL/AABB_tree.h"'),
+    "surface/getme_surface/t.cc": ('#include "getme_wire/status.h"\n', "surface/ must not include"),
 }
 for name, (text, expected) in cases.items():
     bad = run({name: text})
