@@ -13,6 +13,7 @@
 #include "getme/mesh/node_colouring.h"
 #include "getme/mesh/node_positions.h"
 #include "getme/parallel/block_loops.h"
+#include "getme/smoothing/whole_power.h"
 #include "getme/smoothing/worst_cluster.h"
 
 namespace getme {
@@ -77,14 +78,6 @@ struct Powers {
   double p_less1;  // c^(p−1)
   double p_less2;  // c^(p−2)
 };
-
-double WholePower(double base, int exponent) {
-  double result = 1.0;
-  for (double factor = base; exponent > 0; exponent >>= 1, factor *= factor) {
-    if (exponent & 1) result *= factor;
-  }
-  return result;
-}
 
 Powers PowersOf(double cost, double exponent) {
   const double whole = std::floor(exponent);

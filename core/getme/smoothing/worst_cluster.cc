@@ -10,6 +10,7 @@
 
 #include "getme/elements/mean_ratio_gradient.h"
 #include "getme/elements/vec3.h"
+#include "getme/smoothing/whole_power.h"
 
 namespace getme {
 namespace {
@@ -44,15 +45,9 @@ struct ElementTerm {
   std::array<Vec3, kMaxElementNodes> gradient;  // ∂q/∂p for the element's nodes in V
 };
 
-// (q_ref / q)^p with a whole exponent by repeated squaring (the default 20: std::pow was a sixth
-// of the stage), otherwise std::pow.
+// (q_ref / q)^p: by repeated squaring for a whole exponent (the default 20), else std::pow.
 double Term(double ratio, double exponent, int whole_exponent) {
-  if (whole_exponent < 0) return std::pow(ratio, exponent);
-  double result = 1.0;
-  for (int e = whole_exponent; e > 0; e >>= 1, ratio *= ratio) {
-    if (e & 1) result *= ratio;
-  }
-  return result;
+  return whole_exponent < 0 ? std::pow(ratio, exponent) : WholePower(ratio, whole_exponent);
 }
 
 class ClusterObjective {
