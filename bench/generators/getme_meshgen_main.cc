@@ -21,6 +21,8 @@ const char* KindName(getme::meshgen::MeshKind kind) {
   switch (kind) {
     case getme::meshgen::MeshKind::kHexBlock:
       return "hex";
+    case getme::meshgen::MeshKind::kLayeredHexBlock:
+      return "hex-layers";
     case getme::meshgen::MeshKind::kTetBlock:
       return "tet";
     case getme::meshgen::MeshKind::kHybridBlock:

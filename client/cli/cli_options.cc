@@ -47,6 +47,10 @@ Options:
   --free-boundary      the same as --boundary free
   --feature-angle DEG  with --boundary slide: faces meeting at more than DEG degrees (default
                        45) have a feature edge between them
+  --keep-layers        boundary-layer columns (prisms or hexahedra stacked on a wall face,
+                       thinner than wide) keep every layer's height, its distance from the
+                       wall, while their skew is smoothed; needs --boundary fixed or slide
+                       (docs/boundary.md#layers)
   --literal            the paper's literal algorithm: no safeguards (docs/thin-layers.md)
   --no-untangle        refuse a mesh with invalid elements instead of untangling it
   --untangle-boundary  while untangling, let the boundary nodes of invalid elements move
@@ -313,6 +317,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
           feature_angle_given = true;
           return absl::OkStatus();
         }}},
+      {"--keep-layers", {false, SetTrue(options.smoothing.keep_layers)}},
       {"--literal", {false, SetTrue(options.smoothing.literal)}},
       {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
       {"--no-polish", {false, SetTrue(options.smoothing.no_polish)}},
@@ -355,10 +360,17 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
     return absl::InvalidArgumentError(
         "--feature-angle only shapes a sliding boundary: it needs --boundary slide");
   }
-  if (options.smoothing.slide_boundary && !options.server.empty()) {
-    return absl::UnimplementedError(
-        "--boundary slide runs in this process only for now: the service cannot slide boundary "
-        "nodes yet (docs/boundary.md); drop --server or the option");
+  if (options.smoothing.keep_layers && options.smoothing.free_boundary) {
+    return absl::InvalidArgumentError(
+        "--keep-layers measures layer heights from the input's walls, which a free boundary "
+        "moves: use it with --boundary fixed or slide");
+  }
+  if ((options.smoothing.slide_boundary || options.smoothing.keep_layers) &&
+      !options.server.empty()) {
+    return absl::UnimplementedError(absl::StrCat(
+        options.smoothing.slide_boundary ? "--boundary slide" : "--keep-layers",
+        " runs in this process only for now: the service cannot do it yet (docs/boundary.md); "
+        "drop --server or the option"));
   }
   if (auto s = CheckAccessFlags(options.access, !options.server.empty()); !s.ok()) return s;
   if (options.detach && options.server.empty()) {

@@ -84,6 +84,29 @@ std::string FormatSmoothSummary(const events::SmoothReport& report) {
         report.boundary_surface->feature_edges, report.boundary_surface->feature_curves,
         report.boundary_surface->corners);
   }
+  if (report.layers) {
+    const events::LayerReport& layers = *report.layers;
+    absl::StrAppendFormat(
+        &out,
+        "\nlayers           kept: %d columns of %d elements, %d layers, %d nodes held at their "
+        "wall distance\n                 columns end at: %d tetrahedra, %d pyramids, %d prism "
+        "sides, %d thick elements, %d other columns, %d boundary; %d nodes where columns collide "
+        "(free)\n",
+        layers.columns, layers.column_elements, layers.layers, layers.layer_nodes,
+        layers.ends_tetrahedron, layers.ends_pyramid, layers.ends_prism_side, layers.ends_isotropic,
+        layers.ends_taken, layers.ends_boundary, layers.conflicting_nodes);
+    absl::StrAppendFormat(&out, "%-16s %10s %10s\n", "", "before", "after");
+    const auto layer_row = [&](const char* name, double before, double after) {
+      absl::StrAppendFormat(&out, "  %-14s %10.4g %10.4g\n", name, before, after);
+    };
+    layer_row("first min", layers.before.first_min, layers.after.first_min);
+    layer_row("first mean", layers.before.first_mean, layers.after.first_mean);
+    layer_row("first max", layers.before.first_max, layers.after.first_max);
+    layer_row("lean (deg)", layers.before.mean_lean_degrees, layers.after.mean_lean_degrees);
+    layer_row("q_min", layers.before.q_min, layers.after.q_min);
+    layer_row("q_mean", layers.before.q_mean, layers.after.q_mean);
+    absl::StrAppendFormat(&out, "  %-14s %.3g\n", "height change", layers.max_height_change);
+  }
   absl::StrAppendFormat(&out, "\n%-16s %.3f\n%-16s %d\n", "seconds", result.seconds, "threads",
                         result.threads);
   return out;

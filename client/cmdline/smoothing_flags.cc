@@ -9,6 +9,7 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
   params.fix_boundary = !flags.free_boundary;
   params.slide_boundary = flags.slide_boundary;
   params.feature_angle_degrees = flags.feature_angle_degrees;
+  params.keep_layers = flags.keep_layers;
   params.untangle = !flags.no_untangle;
   if (flags.literal) params.UseLiteralPaperAlgorithm();
   if (flags.no_polish) params.polish = false;

@@ -18,6 +18,7 @@ struct SmoothingFlags {
   bool free_boundary = false;
   bool slide_boundary = false;  // --boundary slide (issue 15)
   double feature_angle_degrees = 45.0;
+  bool keep_layers = false;        // --keep-layers (issue 15)
   bool literal = false;            // the paper's literal algorithm, safeguards off
   bool no_untangle = false;        // refuse invalid input instead of untangling it
   bool no_polish = false;          // end --method getme after the sequential substep

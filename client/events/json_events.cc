@@ -67,6 +67,37 @@ std::string SmoothResultJson(const SmoothReport& report) {
                       .AddInt("corners", report.boundary_surface->corners)
                       .Build());
   }
+  if (report.layers) {
+    const LayerReport& layers = *report.layers;
+    const auto state = [](const LayerState& s) {
+      return JsonObject()
+          .AddDouble("first_min", s.first_min)
+          .AddDouble("first_mean", s.first_mean)
+          .AddDouble("first_max", s.first_max)
+          .AddDouble("mean_lean_degrees", s.mean_lean_degrees)
+          .AddDouble("q_min", s.q_min)
+          .AddDouble("q_mean", s.q_mean)
+          .Build();
+    };
+    object.AddRaw("layers", JsonObject()
+                                .AddInt("columns", layers.columns)
+                                .AddInt("column_elements", layers.column_elements)
+                                .AddInt("layer_nodes", layers.layer_nodes)
+                                .AddInt("layers", layers.layers)
+                                .AddInt("conflicting_nodes", layers.conflicting_nodes)
+                                .AddRaw("ends", JsonObject()
+                                                    .AddInt("tetrahedron", layers.ends_tetrahedron)
+                                                    .AddInt("pyramid", layers.ends_pyramid)
+                                                    .AddInt("prism_side", layers.ends_prism_side)
+                                                    .AddInt("isotropic", layers.ends_isotropic)
+                                                    .AddInt("other_column", layers.ends_taken)
+                                                    .AddInt("boundary", layers.ends_boundary)
+                                                    .Build())
+                                .AddRaw("before", state(layers.before))
+                                .AddRaw("after", state(layers.after))
+                                .AddDouble("max_height_change", layers.max_height_change)
+                                .Build());
+  }
   return object.AddDouble("seconds", result.seconds)
       .AddInt("threads", result.threads)
       .AddString("method", MethodName(report.method))

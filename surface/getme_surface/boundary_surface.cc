@@ -10,22 +10,12 @@
 #include "absl/strings/str_join.h"
 #include "getme/elements/element_tables.h"
 #include "getme/elements/vec3.h"
+#include "getme_surface/face_keys.h"
 
 namespace getme::surface {
 namespace {
 
-using SortedFace = std::array<NodeId, 4>;  // ascending ids, -1 after a triangle's three
-using Edge = std::array<NodeId, 2>;        // smaller id first
-
-SortedFace Sorted(const std::array<NodeId, 4>& nodes, int size) {
-  SortedFace sorted = {-1, -1, -1, -1};
-  std::copy_n(nodes.begin(), size, sorted.begin());
-  // Insertion sort of ≤ 4 ids: std::sort here trips GCC 12's -Warray-bounds (as in mesh.cc).
-  for (int k = 1; k < size; ++k) {
-    for (int j = k; j > 0 && sorted[j - 1] > sorted[j]; --j) std::swap(sorted[j - 1], sorted[j]);
-  }
-  return sorted;
-}
+using Edge = std::array<NodeId, 2>;  // smaller id first
 
 Vec3 Position(const Mesh& mesh, NodeId node) {
   return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);

@@ -1,58 +1,19 @@
 #include "getme_surface/surface_projector.h"
 
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
-
 #include <limits>
 #include <vector>
 
 #include "absl/strings/str_cat.h"
+#include "getme_surface/aabb_trees.h"
 
 namespace getme::surface {
-namespace {
-
-using Kernel = CGAL::Simple_cartesian<double>;
-using Point = Kernel::Point_3;
-using Triangle = Kernel::Triangle_3;
-using Segment = Kernel::Segment_3;
-using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<
-    Kernel, CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>>>;
-using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<
-    Kernel, CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator>>>;
-
-Point ToPoint(const Vec3& v) { return Point(v[0], v[1], v[2]); }
-Vec3 ToVec3(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
-
-// A tree with the primitives it points into: the primitives hold iterators into `items`, which
-// therefore never change once the tree is built.
-template <typename Item, typename Tree>
-struct IndexedItems {
-  std::vector<Item> items;
-  Tree tree;
-
-  // Builds the hierarchy and its distance-query accelerator now, with one query, rather than
-  // lazily at the first query: afterwards every query only reads, so threads may share the tree.
-  void Build() {
-    tree.rebuild(items.cbegin(), items.cend());
-    if (items.empty()) return;
-    tree.accelerate_distance_queries();
-    tree.closest_point(Point(0.0, 0.0, 0.0));
-  }
-  Vec3 Nearest(const Vec3& point) const {
-    if (items.empty() || !point.allFinite()) return point;
-    return ToVec3(tree.closest_point(ToPoint(point)));
-  }
-};
-
-}  // namespace
+using aabb::Point;
+using aabb::Segment;
 
 struct SurfaceProjector::Trees {
-  std::vector<IndexedItems<Triangle, TriangleTree>> groups;
-  std::vector<IndexedItems<Segment, SegmentTree>> curves;
-  IndexedItems<Triangle, TriangleTree> all;
+  std::vector<aabb::TriangleSet> groups;
+  std::vector<aabb::SegmentSet> curves;
+  aabb::TriangleSet all;
 };
 
 absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
@@ -68,19 +29,9 @@ absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
   const auto point = [&](NodeId node) {
     return Point(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
   };
-  const auto add = [&](int group, const Triangle& triangle) {
-    // A triangle without area has no nearest point of its own (its edges belong to its
-    // neighbours), and CGAL's distance queries assume none is degenerate.
-    if (triangle.is_degenerate()) return;
-    trees->groups[group].items.push_back(triangle);
-    trees->all.items.push_back(triangle);
-  };
   for (const BoundaryFace& face : surface.faces) {
-    const Point a = point(face.nodes[0]);
-    const Point b = point(face.nodes[1]);
-    const Point c = point(face.nodes[2]);
-    add(face.group, Triangle(a, b, c));
-    if (face.size == 4) add(face.group, Triangle(a, c, point(face.nodes[3])));
+    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->groups[face.group].items);
+    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->all.items);
   }
   for (std::size_t e = 0; e < surface.feature_edges.size(); ++e) {
     const Segment segment(point(surface.feature_edges[e][0]), point(surface.feature_edges[e][1]));

@@ -4,6 +4,12 @@
 // surface and feature nodes slide, corners stay, and a moved node goes back to the nearest point
 // of its group's faces or its feature curve in the input (boundary_surface.h,
 // surface_projector.h). Built once from the input mesh, before smoothing.
+//
+// Boundary-layer columns (layer_columns.h) are found in any case, because a boundary node of a
+// column (a wall node, or a layer node on an end cap) must not slide alone: a wall node that
+// slides under a 0.5 %-thick layer shears it (docs/boundary.md measures it). So without
+// keep_layers such nodes stay where they are, and with it the engine moves them only with their
+// whole column (kept_layers.h), which this class describes.
 
 #include <memory>
 #include <span>
@@ -11,28 +17,63 @@
 #include "absl/status/statusor.h"
 #include "getme/smoothing/boundary_slide.h"
 #include "getme_surface/boundary_surface.h"
+#include "getme_surface/kept_columns.h"
+#include "getme_surface/layer_columns.h"
 #include "getme_surface/surface_projector.h"
+#include "getme_surface/wall_distance.h"
 
 namespace getme::surface {
 
+// How far, relative to it, a moved column node's wall distance may be from its input distance.
+inline constexpr double kWallDistanceTolerance = 1e-3;
+
+struct SlideOptions {
+  std::span<const GroupedFace> groups;  // surface groups of boundary faces (boundary_surface.h)
+  double feature_angle_degrees = kDefaultFeatureAngleDegrees;
+  bool slide_boundary = true;  // SmoothingParams::slide_boundary
+  bool keep_layers = false;    // SmoothingParams::keep_layers: describe the columns to keep
+};
+
 class SurfaceSlide final : public BoundarySlide {
  public:
-  static absl::StatusOr<std::unique_ptr<SurfaceSlide>> Build(
-      const Mesh& mesh, std::span<const GroupedFace> groups = {},
-      double feature_angle_degrees = kDefaultFeatureAngleDegrees);
+  static absl::StatusOr<std::unique_ptr<SurfaceSlide>> Build(const Mesh& mesh,
+                                                             const SlideOptions& options = {});
 
   bool Slides(NodeId node) const override;
   Vec3 Project(NodeId node, const Vec3& point) const override;
   double DistanceToSurface(const Vec3& point) const override;
+  const KeptLayers* kept_layers() const override { return options_.keep_layers ? &kept_ : nullptr; }
+  // The point of the ray at the node's input wall distance, the distance along it corrected by
+  // nearest-point queries on the input's walls (AlongToWallDistance); a boundary node's ray is
+  // first turned into its surface. nullopt unless the point found is within
+  // kWallDistanceTolerance of the distance wanted (near a crease or a narrow gap between walls,
+  // where the nearest wall point jumps).
+  std::optional<Vec3> OnColumn(std::int64_t index, const Vec3& from,
+                               const Vec3& direction) const override;
 
   const BoundarySurface& surface() const { return surface_; }
+  // The boundary-layer columns and their walls as the input had them.
+  const LayerColumns& layers() const { return layers_; }
+  const WallDistance& walls() const { return *walls_; }
+  // The columns as the engine keeps them (kept_layers() without keep_layers, for measuring).
+  const KeptLayers& columns() const { return kept_; }
 
  private:
-  SurfaceSlide(BoundarySurface surface, SurfaceProjector projector)
-      : surface_(std::move(surface)), projector_(std::move(projector)) {}
+  SurfaceSlide(const SlideOptions& options, BoundarySurface surface, SurfaceProjector projector,
+               LayerColumns layers, std::unique_ptr<WallDistance> walls)
+      : options_(options),
+        surface_(std::move(surface)),
+        projector_(std::move(projector)),
+        layers_(std::move(layers)),
+        walls_(std::move(walls)) {}
 
+  SlideOptions options_;
   BoundarySurface surface_;
   SurfaceProjector projector_;
+  LayerColumns layers_;
+  std::unique_ptr<WallDistance> walls_;
+  KeptLayers kept_;
+  std::vector<double> wall_distance_;  // per kept column node: its input distance from the wall
 };
 
 }  // namespace getme::surface

@@ -247,8 +247,14 @@ TEST(CliErrors, BoundaryOptionsAreChecked) {
   const testing::RunResult remote =
       RunGetme({"smooth", "a.vtk", "b.vtk", "--boundary", "slide", "--server", "127.0.0.1:1"});
   EXPECT_EQ(remote.exit_status, 2);
-  EXPECT_NE(remote.err.find("the service cannot slide boundary nodes yet"), std::string::npos)
-      << remote.err;
+  EXPECT_NE(remote.err.find("the service cannot do it yet"), std::string::npos) << remote.err;
+  // Kept layers are measured from the walls, which a free boundary moves.
+  const testing::RunResult free_layers =
+      RunGetme({"smooth", "a.vtk", "b.vtk", "--keep-layers", "--boundary", "free"});
+  EXPECT_EQ(free_layers.exit_status, 2);
+  EXPECT_NE(free_layers.err.find("--keep-layers measures layer heights from the input's walls"),
+            std::string::npos)
+      << free_layers.err;
 }
 
 TEST(CliQuality, JsonReportsTheMixedMesh) {

@@ -19,7 +19,7 @@ TEST(WireEnums, EveryMethodRoundTripsAndUnspecifiedIsGetme) {
 
 TEST(WireEnums, EveryPhaseRoundTripsAndUnknownIsNone) {
   for (Phase phase : {Phase::kUntangle, Phase::kSimultaneous, Phase::kSequential, Phase::kWarpage,
-                      Phase::kSmartLaplace, Phase::kLaplace, Phase::kPolish}) {
+                      Phase::kSmartLaplace, Phase::kLaplace, Phase::kPolish, Phase::kLayers}) {
     const v1::Phase wire = ToWirePhase(phase);
     EXPECT_NE(wire, v1::PHASE_UNSPECIFIED) << PhaseName(phase);
     EXPECT_EQ(FromWirePhase(wire), phase) << PhaseName(phase);

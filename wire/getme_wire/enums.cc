@@ -15,7 +15,7 @@ constexpr std::array<std::pair<Method, v1::Method>, 6> kMethods = {{
     {Method::kLaplace, v1::METHOD_LAPLACE},
 }};
 
-constexpr std::array<std::pair<Phase, v1::Phase>, 7> kPhases = {{
+constexpr std::array<std::pair<Phase, v1::Phase>, 8> kPhases = {{
     {Phase::kUntangle, v1::PHASE_UNTANGLE},
     {Phase::kSimultaneous, v1::PHASE_SIMULTANEOUS},
     {Phase::kSequential, v1::PHASE_SEQUENTIAL},
@@ -23,6 +23,7 @@ constexpr std::array<std::pair<Phase, v1::Phase>, 7> kPhases = {{
     {Phase::kSmartLaplace, v1::PHASE_SMART_LAPLACE},
     {Phase::kLaplace, v1::PHASE_LAPLACE},
     {Phase::kPolish, v1::PHASE_POLISH},
+    {Phase::kLayers, v1::PHASE_LAYERS},
 }};
 
 template <typename Engine, typename Wire, std::size_t kSize>

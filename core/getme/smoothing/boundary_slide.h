@@ -1,7 +1,11 @@
 #pragma once
 
+#include <cstdint>
+#include <optional>
+
 #include "getme/elements/vec3.h"
 #include "getme/mesh/mesh.h"
+#include "getme/smoothing/kept_layers.h"
 
 namespace getme {
 
@@ -11,8 +15,8 @@ namespace getme {
 // engine itself knows no geometry library. Smooth() asks Slides() once per boundary node that the
 // caller did not fix; every phase then passes each new position of a sliding node through
 // Project() before it judges the step, so a sliding node is always on its surface (or curve)
-// when an element's quality is computed. Implementations must be safe to call from several
-// threads at once.
+// when an element's quality is computed. With keep_layers it also describes the boundary-layer
+// columns (kept_layers.h). Implementations must be safe to call from several threads at once.
 class BoundarySlide {
  public:
   virtual ~BoundarySlide() = default;
@@ -20,8 +24,20 @@ class BoundarySlide {
   virtual bool Slides(NodeId node) const = 0;
   // Where sliding node `node` belongs when a smoother has put it at `point`.
   virtual Vec3 Project(NodeId node, const Vec3& point) const = 0;
-  // How far `point` is from the input's boundary surface: the result check's measure.
+  // How far `point` is from the input's boundary surface: the result check's measure for sliding
+  // boundary nodes.
   virtual double DistanceToSurface(const Vec3& point) const = 0;
+  // The boundary-layer columns to keep (SmoothingParams::keep_layers); nullptr if not built.
+  virtual const KeptLayers* kept_layers() const { return nullptr; }
+  // Where column node kept_layers()->nodes[index] goes on the ray from `from` (its wall node)
+  // along unit `direction`: at its input distance from the input's wall (a boundary node on its
+  // surface too), or nullopt where no point keeps that distance, which refuses the column move.
+  // This default takes the distance along the ray as kept_layers() gives it; an implementation
+  // that knows the wall corrects it where the ray leans from the wall's nearest face.
+  virtual std::optional<Vec3> OnColumn(std::int64_t index, const Vec3& from,
+                                       const Vec3& direction) const {
+    return from + kept_layers()->distance[index] * direction;
+  }
 };
 
 }  // namespace getme

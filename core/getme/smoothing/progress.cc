@@ -18,6 +18,8 @@ const char* PhaseName(Phase phase) {
       return "laplace";
     case Phase::kPolish:
       return "polish";
+    case Phase::kLayers:
+      return "layers";
   }
   return "unknown";
 }

@@ -16,6 +16,7 @@ enum class Phase {
   kSmartLaplace,
   kLaplace,
   kPolish,
+  kLayers,  // kept boundary layers: whole columns move (layer_phase.h, issue 15)
 };
 
 const char* PhaseName(Phase phase);

@@ -33,7 +33,8 @@ ResultCheck::ResultCheck(const Mesh& mesh, std::span<const std::uint8_t> movable
       const Vec3 p(mesh.x()[i], mesh.y()[i], mesh.z()[i]);
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
-      if (!sliding.empty() && sliding[i]) sliding_.push_back(static_cast<NodeId>(i));
+      if (!sliding.empty() && sliding[i] && mesh.is_boundary(static_cast<NodeId>(i)))
+        sliding_.push_back(static_cast<NodeId>(i));
     }
     surface_tolerance_ = 1e-9 * (high - low).norm();
   }

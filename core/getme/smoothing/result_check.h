@@ -21,7 +21,8 @@ namespace getme {
 class ResultCheck {
  public:
   // Records the immovable nodes' input coordinates (movable[i] == 0); call before smoothing.
-  // `sliding` (with `slide`) marks the sliding nodes, all of them movable.
+  // `sliding` (with `slide`) marks the sliding nodes, all of them movable; the boundary ones among
+  // them are checked against the input's surface.
   ResultCheck(const Mesh& mesh, std::span<const std::uint8_t> movable,
               const BoundarySlide* slide = nullptr, std::span<const std::uint8_t> sliding = {});
 

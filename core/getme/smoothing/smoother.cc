@@ -8,6 +8,7 @@
 #include "absl/strings/str_join.h"
 #include "getme/elements/vec3.h"
 #include "getme/smoothing/laplace_smoother.h"
+#include "getme/smoothing/layer_phase.h"
 #include "getme/smoothing/polish.h"
 #include "getme/smoothing/result_check.h"
 #include "getme/smoothing/sequential_smoother.h"
@@ -40,40 +41,9 @@ absl::Status PlainLaplaceInverted(const MeshQuality& after) {
                    "; it does not check validity: use smart-laplace or getme"));
 }
 
-absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
-  auto record = [&](absl::StatusOr<PhaseSummary> phase) -> absl::Status {
-    if (!phase.ok()) return phase.status();
-    result.phases.push_back(*phase);
-    switch (phase->phase) {
-      case Phase::kUntangle:
-        result.iterations_untangle += phase->iterations;
-        break;
-      case Phase::kSimultaneous:
-        result.iterations_simultaneous += phase->iterations;
-        break;
-      case Phase::kSequential:
-      case Phase::kWarpage:
-        result.iterations_sequential += phase->iterations;
-        break;
-      case Phase::kSmartLaplace:
-      case Phase::kLaplace:
-        result.iterations_laplace += phase->iterations;
-        break;
-      case Phase::kPolish:
-        result.iterations_polish += phase->iterations;
-        break;
-    }
-    return absl::OkStatus();
-  };
-
-  const Method method = context.params.method;
-  // Plain Laplace is quality-unaware and may itself invert elements: it runs on any input.
-  if (method == Method::kLaplace) return record(RunLaplace(context));
-
-  if (result.before.invalid > 0) {
-    if (!context.params.untangle) return InvalidInput(result.before);
-    if (auto s = record(RunUntangle(context)); !s.ok()) return s;
-  }
+// The phases of `method` itself, after untangling.
+template <typename Record>
+absl::Status RunMethod(SmoothingContext& context, Method method, Record& record) {
   switch (method) {
     case Method::kSimultaneous:
       return record(RunSimultaneous(context, SimultaneousStop::kSettled));
@@ -111,6 +81,57 @@ absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
   return absl::OkStatus();
 }
 
+absl::Status RunPhases(SmoothingContext& context, SmoothingResult& result) {
+  auto record = [&](absl::StatusOr<PhaseSummary> phase) -> absl::Status {
+    if (!phase.ok()) return phase.status();
+    result.phases.push_back(*phase);
+    switch (phase->phase) {
+      case Phase::kUntangle:
+        result.iterations_untangle += phase->iterations;
+        break;
+      case Phase::kSimultaneous:
+        result.iterations_simultaneous += phase->iterations;
+        break;
+      case Phase::kSequential:
+      case Phase::kWarpage:
+        result.iterations_sequential += phase->iterations;
+        break;
+      case Phase::kSmartLaplace:
+      case Phase::kLaplace:
+        result.iterations_laplace += phase->iterations;
+        break;
+      case Phase::kPolish:
+        result.iterations_polish += phase->iterations;
+        break;
+      case Phase::kLayers:
+        result.iterations_layers += phase->iterations;
+        break;
+    }
+    return absl::OkStatus();
+  };
+
+  const Method method = context.params.method;
+  // Plain Laplace is quality-unaware and may itself invert elements: it runs on any input.
+  if (method == Method::kLaplace) return record(RunLaplace(context));
+
+  if (result.before.invalid > 0) {
+    if (!context.params.untangle) return InvalidInput(result.before);
+    if (auto s = record(RunUntangle(context)); !s.ok()) return s;
+  }
+  // Kept layers (layer_phase.h): columns straightened before the method, and with a sliding
+  // boundary moved with their wall nodes after it, where the rest of the mesh has settled.
+  const bool keep_layers = context.params.keep_layers && context.slide != nullptr &&
+                           context.slide->kept_layers() != nullptr;
+  if (keep_layers) {
+    if (auto s = record(RunLayers(context, LayerStage::kStraighten)); !s.ok()) return s;
+  }
+  if (auto s = RunMethod(context, method, record); !s.ok()) return s;
+  if (keep_layers && context.params.slide_boundary) {
+    return record(RunLayers(context, LayerStage::kFollowWall));
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params,
@@ -118,12 +139,18 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
                                        const CancellationToken* cancel,
                                        const BoundarySlide* slide) {
   if (auto status = params.Validate(); !status.ok()) return status;
-  if (params.slide_boundary && slide == nullptr) {
+  if ((params.slide_boundary || params.keep_layers) && slide == nullptr) {
     return absl::InvalidArgumentError(
-        "slide_boundary is set but no BoundarySlide was given: build one from the input mesh "
-        "(surface::SurfaceSlide) and pass it to Smooth");
+        absl::StrCat(params.slide_boundary ? "slide_boundary" : "keep_layers",
+                     " is set but no BoundarySlide was given: build one from the input mesh "
+                     "(surface::SurfaceSlide) and pass it to Smooth"));
   }
-  if (!params.slide_boundary) slide = nullptr;
+  if (params.keep_layers && slide->kept_layers() == nullptr) {
+    return absl::InvalidArgumentError(
+        "keep_layers is set but the BoundarySlide given describes no layers: build it with kept "
+        "layers (surface::SlideOptions::keep_layers)");
+  }
+  if (!params.slide_boundary && !params.keep_layers) slide = nullptr;
   ThreadPool pool(params.threads);
   SmoothingResult result;
   result.threads = pool.thread_count();
@@ -133,15 +160,22 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
   // must expect exactly those to move, and no other immovable node.
   const bool untangles =
       params.method != Method::kLaplace && params.untangle && result.before.invalid > 0;
+  // Kept columns move in the layer phase only, their boundary nodes on the input's surface.
+  std::vector<std::uint8_t> movable = context.movable;
+  std::vector<std::uint8_t> sliding = context.sliding;
+  for (NodeId node = 0; node < mesh.node_count(); ++node) {
+    if (!context.column_movable[node]) continue;
+    movable[node] = 1;
+    if (params.fix_boundary && mesh.is_boundary(node)) sliding[node] = 1;
+  }
   const ResultCheck check(
-      mesh,
-      untangles ? UntangleMovable(mesh, params, context.movable, context.quality) : context.movable,
-      slide, context.sliding);
+      mesh, untangles ? UntangleMovable(mesh, params, movable, context.quality) : movable, slide,
+      sliding);
   // The sliding nodes' input positions, to count the ones that moved.
   std::vector<std::pair<NodeId, Vec3>> slide_start;
   if (slide != nullptr) {
     for (NodeId node = 0; node < mesh.node_count(); ++node) {
-      if (context.sliding[node]) {
+      if (sliding[node]) {
         slide_start.emplace_back(node, Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]));
       }
     }
@@ -150,6 +184,9 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
   if (slide != nullptr) {
     BoundarySlideSummary summary;
     summary.sliding_nodes = static_cast<std::int64_t>(slide_start.size());
+    if (params.keep_layers && slide->kept_layers() != nullptr) {
+      summary.layer_nodes = static_cast<std::int64_t>(slide->kept_layers()->nodes.size());
+    }
     for (const auto& [node, start] : slide_start) {
       const Vec3 now(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
       if (now != start) ++summary.slid_nodes;

@@ -22,11 +22,13 @@ struct PhaseSummary {
   std::int64_t reverted_nodes = 0;
 };
 
-// What a sliding boundary did (SmoothingParams::slide_boundary, issue 15).
+// What a sliding boundary did (SmoothingParams::slide_boundary and keep_layers, issue 15).
 struct BoundarySlideSummary {
   std::int64_t sliding_nodes = 0;  // boundary nodes that could slide (not corners, not fixed)
   std::int64_t slid_nodes = 0;     // of those, the ones that moved
   double max_distance = 0.0;       // the largest distance of one from the input's surface
+  // Nodes above the walls in kept boundary-layer columns (keep_layers).
+  std::int64_t layer_nodes = 0;
 };
 
 struct SmoothingResult {
@@ -38,9 +40,11 @@ struct SmoothingResult {
   std::int64_t iterations_sequential = 0;  // includes the q_γ sequential substep
   std::int64_t iterations_laplace = 0;
   std::int64_t iterations_polish = 0;  // sweeps over the free nodes (SmoothingParams::polish)
+  std::int64_t iterations_layers = 0;  // passes over the kept columns (keep_layers)
   double seconds = 0.0;
   int threads = 1;
-  std::optional<BoundarySlideSummary> boundary_slide;  // with a sliding boundary only
+  // With a sliding boundary or kept layers only.
+  std::optional<BoundarySlideSummary> boundary_slide;
 };
 
 // Smooths the free nodes of `mesh` in place with params.method. Invalid input is untangled first

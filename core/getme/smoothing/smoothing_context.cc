@@ -19,11 +19,27 @@ SmoothingContext::SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_
       slide(slide_in) {
   movable.resize(mesh.node_count());
   sliding.assign(mesh.node_count(), 0);
+  column_movable.assign(mesh.node_count(), 0);
+  // Kept layers: every column node, its wall node included, moves only with its column.
+  std::vector<std::uint8_t> in_column(mesh.node_count(), 0);
+  if (params.keep_layers && slide != nullptr && slide->kept_layers() != nullptr) {
+    const KeptLayers& layers = *slide->kept_layers();
+    for (NodeId node : layers.wall) in_column[node] = 1;
+    for (NodeId node : layers.nodes) in_column[node] = 1;
+  }
   for (std::int64_t i = 0; i < mesh.node_count(); ++i) {
     const auto node = static_cast<NodeId>(i);
     const bool held_boundary = params.fix_boundary && mesh.is_boundary(node);
-    sliding[i] = !mesh.is_fixed(node) && held_boundary && slide != nullptr && slide->Slides(node);
-    movable[i] = !mesh.is_fixed(node) && (!held_boundary || sliding[i]) ? 1 : 0;
+    const bool may_move =
+        !mesh.is_fixed(node) &&
+        (!held_boundary || (params.slide_boundary && slide != nullptr && slide->Slides(node)));
+    const bool slides = may_move && held_boundary;
+    if (in_column[i]) {
+      column_movable[i] = may_move ? 1 : 0;
+      continue;
+    }
+    sliding[i] = slides ? 1 : 0;
+    movable[i] = may_move ? 1 : 0;
   }
   RefreshQuality();
 }

@@ -20,7 +20,8 @@ namespace getme {
 // per-element quality (kept up to date by each phase so the next one need not recompute it),
 // progress reporting and cancellation.
 struct SmoothingContext {
-  // With `slide`, boundary nodes it says slide are movable too (boundary_slide.h).
+  // With `slide`, boundary nodes it says slide are movable too (boundary_slide.h), and with
+  // keep_layers its columns' nodes move only as columns.
   SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in, ThreadPool& pool_in,
                    const ProgressCallback& progress_in, const CancellationToken* cancel_in,
                    const BoundarySlide* slide_in = nullptr);
@@ -37,6 +38,10 @@ struct SmoothingContext {
   std::vector<std::uint8_t> movable;
   // 1 for the boundary nodes that slide on the input's surface (a subset of movable).
   std::vector<std::uint8_t> sliding;
+  // With keep_layers: 1 for the column nodes (kept_layers.h) the layer phase may move, as a
+  // column (layer_phase.h): not fixed by the caller, and on a held boundary only if they slide.
+  // Column nodes are never movable in the other phases.
+  std::vector<std::uint8_t> column_movable;
   // Per element: mean ratio in [0, 1], or kInvalidQuality for an invalid element.
   std::vector<double> quality;
 

@@ -150,6 +150,11 @@ absl::Status SmoothingParams::Validate() const {
         "slide_boundary needs the boundary held (fix_boundary): a free boundary has no surface to "
         "slide on; choose one of the two");
   }
+  if (keep_layers && !fix_boundary) {
+    return absl::InvalidArgumentError(
+        "keep_layers needs the boundary held or sliding (fix_boundary): a free boundary moves the "
+        "walls the layer heights are measured from");
+  }
   if (!(polish_over_relaxation >= 1.0 && polish_over_relaxation < 2.0)) {
     return OutOfRange("polish_over_relaxation", polish_over_relaxation, "in [1, 2)");
   }

@@ -157,6 +157,12 @@ struct SmoothingParams {
   // The angle between two boundary faces' normals above which their edge is a feature edge, along
   // which nodes slide only (docs/boundary.md: why 45). Used by whoever builds the BoundarySlide.
   double feature_angle_degrees = 45.0;
+  // Issue 15: nodes in boundary-layer columns (prisms or hexahedra stacked on a wall face) keep
+  // their input distance from the wall, so every layer keeps its height while its skew is
+  // smoothed away (docs/boundary.md#layers). The BoundarySlide given to Smooth() finds the
+  // columns and holds the nodes (surface/). Requires fix_boundary (held or sliding): a free
+  // boundary moves the wall the heights are measured from.
+  bool keep_layers = false;
   int threads = 0;  // 0 = hardware concurrency; results do not depend on it
 
   absl::Status Validate() const;

@@ -9,6 +9,7 @@
 #include "getme/meshgen/distorted_hex_block.h"
 #include "getme/meshgen/hybrid_block.h"
 #include "getme/meshgen/jittered_tet_block.h"
+#include "getme/meshgen/layered_hex_block.h"
 #include "getme/meshgen/plate_with_holes.h"
 #include "getme/meshgen/ring_in_block.h"
 
@@ -17,14 +18,16 @@ namespace {
 
 absl::StatusOr<MeshKind> ParseKind(const std::string& kind) {
   if (kind == "hex") return MeshKind::kHexBlock;
+  if (kind == "hex-layers") return MeshKind::kLayeredHexBlock;
   if (kind == "tet") return MeshKind::kTetBlock;
   if (kind == "hybrid") return MeshKind::kHybridBlock;
   if (kind == "vessel") return MeshKind::kVessel;
   if (kind == "artery") return MeshKind::kArtery;
   if (kind == "plate") return MeshKind::kPlate;
   if (kind == "ring") return MeshKind::kRing;
-  return absl::InvalidArgumentError(absl::StrCat(
-      "unknown mesh kind '", kind, "'; expected plate, ring, vessel, artery, hex, tet or hybrid"));
+  return absl::InvalidArgumentError(
+      absl::StrCat("unknown mesh kind '", kind,
+                   "'; expected plate, ring, vessel, artery, hex, hex-layers, tet or hybrid"));
 }
 
 absl::Status ParseSize(const std::string& flag, const std::string& value, MeshgenCommand& command) {
@@ -146,8 +149,10 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
       status = ParseNumber(arg, value, command.artery.junction_fillet);
     } else if (arg == "--first-layer-ratio") {
       status = ParseNumber(arg, value, command.artery.first_layer_ratio);
+      command.layer_first_height = command.artery.first_layer_ratio;
     } else if (arg == "--growth-ratio") {
       status = ParseNumber(arg, value, command.artery.growth_ratio);
+      command.layer_growth = command.artery.growth_ratio;
     } else if (arg == "--layer-height-ratio") {
       status = ParseNumber(arg, value, command.vessel.layer_height_ratio);
     } else {
@@ -182,6 +187,11 @@ absl::StatusOr<Mesh> GenerateMesh(const MeshgenCommand& command, std::string* no
   switch (command.kind) {
     case MeshKind::kHexBlock:
       return DistortedHexBlock(command.nx, command.ny, command.nz, block_distortion, command.seed);
+    case MeshKind::kLayeredHexBlock:
+      return LayeredHexBlock(command.nx, command.ny, command.nz,
+                             command.layer_first_height.value_or(kLayeredHexFirstHeight),
+                             command.layer_growth.value_or(kLayeredHexGrowth), block_distortion,
+                             command.seed);
     case MeshKind::kTetBlock:
       return JitteredTetBlock(command.nx, command.ny, command.nz, block_distortion, command.seed);
     case MeshKind::kHybridBlock:

@@ -12,9 +12,20 @@
 
 namespace getme::meshgen {
 
-enum class MeshKind { kHexBlock, kTetBlock, kHybridBlock, kVessel, kArtery, kPlate, kRing };
+enum class MeshKind {
+  kHexBlock,
+  kLayeredHexBlock,
+  kTetBlock,
+  kHybridBlock,
+  kVessel,
+  kArtery,
+  kPlate,
+  kRing
+};
 
 inline constexpr double kBlockDistortion = 0.3;
+inline constexpr double kLayeredHexFirstHeight = 0.01;
+inline constexpr double kLayeredHexGrowth = 1.3;
 
 // One invocation of getme-meshgen: which mesh, with which parameters, written where.
 struct MeshgenCommand {
@@ -30,6 +41,9 @@ struct MeshgenCommand {
   std::optional<std::int64_t> elements;
   ThinPrismVesselOptions vessel;
   ArteryOptions artery;  // --radius, --length, --mesh-size, --layers and --seed set it too
+  // hex-layers: --first-layer-ratio and --growth-ratio; unset: the defaults below.
+  std::optional<double> layer_first_height;
+  std::optional<double> layer_growth;
   bool binary = false;
 };
 
@@ -46,7 +60,11 @@ inline constexpr char kMeshgenUsage[] =
     "                 wall with geometric growth (default 2 branches, 6 + 2 layers, 21k\n"
     "                 elements; --mesh-size 0.5: 8k, 0.2: 50k; docs/thin-layers.md)\n"
     "        blocks: hex (distorted hexahedra), tet (jittered Kuhn tetrahedra),\n"
-    "          hybrid (hexahedra, prisms, pyramids and tetrahedra)\n"
+    "          hybrid (hexahedra, prisms, pyramids and tetrahedra),\n"
+    "          hex-layers (hexahedra clustered geometrically toward the wall z = 0, a\n"
+    "          boundary-layer block: layer k is --first-layer-ratio x --growth-ratio^k\n"
+    "          thick, x and y edges 1; defaults 0.01 and 1.3; --distortion 0.3 leans the\n"
+    "          columns)\n"
     "  --elements N            plate/ring/vessel: aim for N elements (plate and ring within 10 %,\n"
     "                          vessel within 20 %; vessel: a straight vessel whose length grows\n"
     "                          with N, built from segments of at most 100k elements)\n"
