@@ -8,52 +8,13 @@
 #include "cli/interrupt_scope.h"
 #include "cli/smooth_run.h"
 #include "formats/grid_mesh.h"
-#include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
 #include "getme/smoothing/smoother.h"
-#include "getme_surface/layer_heights.h"
+#include "getme_surface/layer_report.h"
 #include "getme_surface/surface_slide.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::cli {
-namespace {
-
-// The kept layers' heights and quality in the mesh as it is now.
-surface::LayerHeights MeasureLayers(const Mesh& mesh, const surface::SurfaceSlide& slide,
-                                    int threads) {
-  ThreadPool pool(threads);
-  return surface::MeasureLayerHeights(mesh, slide.layers(), slide.walls(), slide.columns(),
-                                      ComputeElementQualities(mesh, pool));
-}
-
-events::LayerState LayerStateOf(const surface::LayerHeights& heights) {
-  return events::LayerState{heights.first_min,         heights.first_mean, heights.first_max,
-                            heights.mean_lean_degrees, heights.q_min,      heights.q_mean};
-}
-
-events::LayerReport LayerReportOf(const surface::LayerColumns& columns,
-                                  const surface::LayerHeights& before,
-                                  const surface::LayerHeights& after, std::int64_t layer_nodes) {
-  events::LayerReport report;
-  report.columns = columns.column_count();
-  report.column_elements = columns.column_elements();
-  report.layer_nodes = layer_nodes;
-  report.layers = columns.layers;
-  report.conflicting_nodes = columns.conflicting_nodes;
-  report.ends_tetrahedron = columns.ends.tetrahedron;
-  report.ends_pyramid = columns.ends.pyramid;
-  report.ends_prism_side = columns.ends.prism_side;
-  report.ends_isotropic = columns.ends.isotropic;
-  report.ends_taken = columns.ends.taken;
-  report.ends_boundary = columns.ends.boundary;
-  report.before = LayerStateOf(before);
-  report.after = LayerStateOf(after);
-  report.max_height_change = surface::MaxRelativeHeightChange(before, after);
-  return report;
-}
-
-}  // namespace
-
 namespace {
 
 absl::Status WithInput(const std::string& input, const absl::Status& status) {
@@ -112,7 +73,8 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   std::optional<surface::LayerHeights> layers_before;
   if (params.keep_layers) {
     const surface::LayerColumns& columns = slide->layers();
-    layers_before = MeasureLayers(mesh, *slide, params.threads);
+    ThreadPool pool(params.threads);
+    layers_before = surface::MeasureKeptLayers(mesh, *slide, pool);
     spdlog::info(
         "layers kept: {} columns of {} elements, {} layers; first-layer height {:.4g} to {:.4g}",
         columns.column_count(), columns.column_elements(), columns.layers, layers_before->first_min,
@@ -147,9 +109,9 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   }
   report.result = *std::move(result);
   if (layers_before) {
-    report.layers =
-        LayerReportOf(slide->layers(), *layers_before, MeasureLayers(mesh, *slide, params.threads),
-                      report.result.boundary_slide->layer_nodes);
+    ThreadPool pool(params.threads);
+    report.layers = surface::MakeLayerReport(*slide, *layers_before,
+                                             surface::MeasureKeptLayers(mesh, *slide, pool));
   }
 
   if (absl::Status status = formats::UpdateGridFromMesh(mesh, converted->cell_elements, grid);

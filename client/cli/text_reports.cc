@@ -85,7 +85,7 @@ std::string FormatSmoothSummary(const events::SmoothReport& report) {
         report.boundary_surface->corners);
   }
   if (report.layers) {
-    const events::LayerReport& layers = *report.layers;
+    const surface::LayerReport& layers = *report.layers;
     absl::StrAppendFormat(
         &out,
         "\nlayers           kept: %d columns of %d elements, %d layers, %d nodes held at their "

@@ -68,8 +68,8 @@ std::string SmoothResultJson(const SmoothReport& report) {
                       .Build());
   }
   if (report.layers) {
-    const LayerReport& layers = *report.layers;
-    const auto state = [](const LayerState& s) {
+    const surface::LayerReport& layers = *report.layers;
+    const auto state = [](const surface::LayerState& s) {
       return JsonObject()
           .AddDouble("first_min", s.first_min)
           .AddDouble("first_mean", s.first_mean)
