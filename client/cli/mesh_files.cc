@@ -1,5 +1,7 @@
 #include "cli/mesh_files.h"
 
+#include <algorithm>
+
 #include "absl/strings/str_cat.h"
 #include "spdlog/spdlog.h"
 
@@ -72,6 +74,28 @@ absl::StatusOr<std::vector<std::uint8_t>> FixedNodesFromOptions(
     const formats::MeshDocument& document, const SmoothCommandOptions& options) {
   if (options.fix_groups.empty() && !options.fix_surfaces) return std::vector<std::uint8_t>{};
   return formats::SelectFixedNodes(document, options.fix_groups, options.fix_surfaces);
+}
+
+std::vector<surface::GroupedFace> SurfaceGroupsOf(const formats::MeshDocument& document) {
+  const std::vector<formats::TaggedFace> tagged = formats::TaggedSurfaceFaces(document);
+  std::vector<std::int64_t> tags;
+  for (const formats::TaggedFace& face : tagged) {
+    if (face.tag != 0) tags.push_back(face.tag);
+  }
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  std::vector<surface::GroupedFace> groups;
+  groups.reserve(tagged.size());
+  for (const formats::TaggedFace& face : tagged) {
+    surface::GroupedFace grouped{{-1, -1, -1, -1}, face.size, 0};
+    for (int k = 0; k < face.size; ++k) grouped.nodes[k] = static_cast<NodeId>(face.nodes[k]);
+    if (face.tag != 0) {
+      grouped.group =
+          static_cast<int>(std::lower_bound(tags.begin(), tags.end(), face.tag) - tags.begin()) + 1;
+    }
+    groups.push_back(grouped);
+  }
+  return groups;
 }
 
 }  // namespace getme::cli

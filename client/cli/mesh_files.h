@@ -8,6 +8,7 @@
 #include "absl/status/statusor.h"
 #include "cli/cli_options.h"
 #include "formats/mesh_file.h"
+#include "getme_surface/boundary_surface.h"
 
 namespace getme::cli {
 
@@ -34,5 +35,10 @@ absl::Status WriteOutputMesh(const formats::MeshDocument& document, const Output
 // neither was given.
 absl::StatusOr<std::vector<std::uint8_t>> FixedNodesFromOptions(
     const formats::MeshDocument& document, const SmoothCommandOptions& options);
+
+// The surface groups of the file's tagged triangles and quads (formats::TaggedSurfaceFaces) for a
+// sliding boundary: each distinct nonzero tag becomes a group 1, 2, … in ascending tag order, and
+// tag 0 (Gmsh's and MEDIT's "none") is group 0, as is every boundary face without a cell.
+std::vector<surface::GroupedFace> SurfaceGroupsOf(const formats::MeshDocument& document);
 
 }  // namespace getme::cli

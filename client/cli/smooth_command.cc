@@ -61,7 +61,10 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   // boundary-layer columns, before anything moves.
   std::unique_ptr<surface::SurfaceSlide> slide;
   if (params.slide_boundary || params.keep_layers) {
+    const std::vector<surface::GroupedFace> groups = SurfaceGroupsOf(run->document);
     surface::SlideOptions slide_options;
+    slide_options.groups = groups;
+    slide_options.skip_interior_groups = true;
     slide_options.feature_angle_degrees = params.feature_angle_degrees;
     slide_options.slide_boundary = params.slide_boundary;
     slide_options.keep_layers = params.keep_layers;
@@ -82,12 +85,14 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   }
   if (params.slide_boundary) {
     const surface::BoundarySurface& boundary = slide->surface();
-    report.boundary_surface =
-        events::BoundarySurfaceCounts{static_cast<std::int64_t>(boundary.feature_edges.size()),
-                                      boundary.curve_count, boundary.corner_count};
-    spdlog::info("boundary slides: {} feature edges in {} curves, {} corners (feature angle {}°)",
-                 boundary.feature_edges.size(), boundary.curve_count, boundary.corner_count,
-                 params.feature_angle_degrees);
+    report.boundary_surface = events::BoundarySurfaceCounts{
+        static_cast<std::int64_t>(boundary.feature_edges.size()), boundary.curve_count,
+        boundary.corner_count, boundary.group_count, boundary.interior_grouped_faces};
+    spdlog::info(
+        "boundary slides: {} surface groups, {} feature edges in {} curves, {} corners (feature "
+        "angle {}°); {} tagged faces not on the boundary (interfaces) left out",
+        boundary.group_count, boundary.feature_edges.size(), boundary.curve_count,
+        boundary.corner_count, params.feature_angle_degrees, boundary.interior_grouped_faces);
   }
 
   ProgressSink sink(options, run->trace.get());

@@ -79,10 +79,11 @@ std::string FormatSmoothSummary(const events::SmoothReport& report) {
     absl::StrAppendFormat(
         &out,
         "\nboundary         slide: %d of %d sliding nodes moved, at most %.3g from the input's "
-        "surface\n                 %d feature edges in %d curves, %d corners (fixed)\n",
+        "surface\n                 %d surface groups, %d feature edges in %d curves, %d corners "
+        "(fixed)\n",
         slide.slid_nodes, slide.sliding_nodes, slide.max_distance,
-        report.boundary_surface->feature_edges, report.boundary_surface->feature_curves,
-        report.boundary_surface->corners);
+        report.boundary_surface->surface_groups, report.boundary_surface->feature_edges,
+        report.boundary_surface->feature_curves, report.boundary_surface->corners);
   }
   if (report.layers) {
     const surface::LayerReport& layers = *report.layers;

@@ -57,15 +57,18 @@ std::string SmoothResultJson(const SmoothReport& report) {
       .AddRaw("phases", phases)
       .AddString("boundary", report.boundary);
   if (result.boundary_slide && report.boundary_surface) {
-    object.AddRaw("boundary_slide",
-                  JsonObject()
-                      .AddInt("sliding_nodes", result.boundary_slide->sliding_nodes)
-                      .AddInt("slid_nodes", result.boundary_slide->slid_nodes)
-                      .AddDouble("max_distance", result.boundary_slide->max_distance)
-                      .AddInt("feature_edges", report.boundary_surface->feature_edges)
-                      .AddInt("feature_curves", report.boundary_surface->feature_curves)
-                      .AddInt("corners", report.boundary_surface->corners)
-                      .Build());
+    object.AddRaw(
+        "boundary_slide",
+        JsonObject()
+            .AddInt("sliding_nodes", result.boundary_slide->sliding_nodes)
+            .AddInt("slid_nodes", result.boundary_slide->slid_nodes)
+            .AddDouble("max_distance", result.boundary_slide->max_distance)
+            .AddInt("feature_edges", report.boundary_surface->feature_edges)
+            .AddInt("feature_curves", report.boundary_surface->feature_curves)
+            .AddInt("corners", report.boundary_surface->corners)
+            .AddInt("surface_groups", report.boundary_surface->surface_groups)
+            .AddInt("interior_grouped_faces", report.boundary_surface->interior_grouped_faces)
+            .Build());
   }
   if (report.layers) {
     const surface::LayerReport& layers = *report.layers;

@@ -255,6 +255,29 @@ absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& documen
                                           number.has_value() ? "" : " (give the group's number)"));
 }
 
+std::vector<TaggedFace> TaggedSurfaceFaces(const MeshDocument& document) {
+  const UnstructuredGrid& grid = document.grid;
+  std::vector<TaggedFace> faces;
+  for (const char* name : {"gmsh:physical", "medit:ref"}) {
+    const DataArray* tags = FindArray(grid.cell_data, name);
+    if (tags == nullptr || tags->components != 1 || tags->tuple_count() != grid.cells.size()) {
+      continue;
+    }
+    for (std::int64_t cell = 0; cell < grid.cells.size(); ++cell) {
+      const int type = grid.cells.types[cell];
+      if (type != kVtkTriangle && type != kVtkQuad) continue;
+      TaggedFace face;
+      face.size = type == kVtkTriangle ? 3 : 4;
+      if (grid.cells.node_count(cell) != face.size) continue;
+      std::copy_n(grid.cells.nodes(cell), face.size, face.nodes.begin());
+      face.tag = static_cast<std::int64_t>(tags->AsDouble(cell));
+      faces.push_back(face);
+    }
+    break;
+  }
+  return faces;
+}
+
 absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& document,
                                                            const std::vector<std::string>& groups,
                                                            bool surface_cells) {

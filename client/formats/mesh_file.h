@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -67,5 +68,17 @@ absl::StatusOr<std::vector<std::int64_t>> GroupCells(const MeshDocument& documen
 absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& document,
                                                            const std::vector<std::string>& groups,
                                                            bool surface_cells);
+
+// A triangle or quad cell of a file with its surface group: the cell's value in the cell array
+// "gmsh:physical" (a Gmsh physical group; MSH files and what meshio writes from them) or, if the
+// file has none, "medit:ref" (a MEDIT reference).
+struct TaggedFace {
+  std::array<std::int64_t, 4> nodes{-1, -1, -1, -1};
+  int size = 0;
+  std::int64_t tag = 0;
+};
+
+// The tagged triangles and quads of `document`, in cell order; none if it has no such array.
+std::vector<TaggedFace> TaggedSurfaceFaces(const MeshDocument& document);
 
 }  // namespace getme::formats

@@ -9,6 +9,8 @@
 namespace getme::formats {
 
 // VTK cell type codes (vtkCellType.h) that matter to getme by name.
+inline constexpr int kVtkTriangle = 5;
+inline constexpr int kVtkQuad = 9;
 inline constexpr int kVtkTetra = 10;
 inline constexpr int kVtkHexahedron = 12;
 inline constexpr int kVtkWedge = 13;

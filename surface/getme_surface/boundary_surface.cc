@@ -64,7 +64,8 @@ std::vector<BoundaryFace> CollectBoundaryFaces(const Mesh& mesh) {
   return faces;
 }
 
-absl::Status AssignGroups(std::span<const GroupedFace> groups, std::vector<BoundaryFace>& faces,
+absl::Status AssignGroups(std::span<const GroupedFace> groups, bool skip_interior,
+                          std::int64_t& skipped, std::vector<BoundaryFace>& faces,
                           int& group_count) {
   absl::flat_hash_map<SortedFace, std::size_t> index;
   index.reserve(faces.size());
@@ -84,6 +85,10 @@ absl::Status AssignGroups(std::span<const GroupedFace> groups, std::vector<Bound
                                                      grouped.group, ": groups are 0 or more"));
     }
     const auto found = index.find(Sorted(grouped.nodes, grouped.size));
+    if (found == index.end() && skip_interior) {
+      ++skipped;
+      continue;
+    }
     if (found == index.end()) {
       return absl::InvalidArgumentError(
           absl::StrCat("grouped face ", g, " {", absl::StrJoin(nodes, ", "),
@@ -113,14 +118,17 @@ void Join(std::vector<int>& parent, int a, int b) {
 
 absl::StatusOr<BoundarySurface> ExtractBoundarySurface(const Mesh& mesh,
                                                        std::span<const GroupedFace> groups,
-                                                       double feature_angle_degrees) {
+                                                       double feature_angle_degrees,
+                                                       bool skip_interior_groups) {
   if (!(feature_angle_degrees >= 0.0 && feature_angle_degrees <= 180.0)) {
     return absl::InvalidArgumentError(absl::StrCat(
         "feature_angle_degrees is ", feature_angle_degrees, ": it must be in [0, 180]"));
   }
   BoundarySurface surface;
   surface.faces = CollectBoundaryFaces(mesh);
-  if (absl::Status status = AssignGroups(groups, surface.faces, surface.group_count);
+  if (absl::Status status =
+          AssignGroups(groups, skip_interior_groups, surface.interior_grouped_faces, surface.faces,
+                       surface.group_count);
       !status.ok()) {
     return status;
   }

@@ -56,14 +56,19 @@ struct BoundarySurface {
   int curve_count = 0;
   int group_count = 0;
   std::int64_t corner_count = 0;
+  // Grouped faces left out as not on the boundary (skip_interior_groups).
+  std::int64_t interior_grouped_faces = 0;
 };
 
 // Extracts the boundary of `mesh` and classifies its nodes. `groups` tags boundary faces; a face
 // it does not list is in group 0, and an entry that is not a boundary face of the mesh is an
 // InvalidArgument naming it. A node whose faces lie in two groups is on a feature edge between
-// them, so it never leaves its group. feature_angle_degrees must be in [0, 180].
+// them, so it never leaves its group. feature_angle_degrees must be in [0, 180]. With
+// skip_interior_groups, grouped faces that are not on the boundary are counted instead
+// (interior_grouped_faces): a file's tagged surface cells include the interfaces between its
+// volumes, which bound no surface to slide on.
 absl::StatusOr<BoundarySurface> ExtractBoundarySurface(
     const Mesh& mesh, std::span<const GroupedFace> groups = {},
-    double feature_angle_degrees = kDefaultFeatureAngleDegrees);
+    double feature_angle_degrees = kDefaultFeatureAngleDegrees, bool skip_interior_groups = false);
 
 }  // namespace getme::surface

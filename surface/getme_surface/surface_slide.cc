@@ -6,8 +6,8 @@ namespace getme::surface {
 
 absl::StatusOr<std::unique_ptr<SurfaceSlide>> SurfaceSlide::Build(const Mesh& mesh,
                                                                   const SlideOptions& options) {
-  absl::StatusOr<BoundarySurface> surface =
-      ExtractBoundarySurface(mesh, options.groups, options.feature_angle_degrees);
+  absl::StatusOr<BoundarySurface> surface = ExtractBoundarySurface(
+      mesh, options.groups, options.feature_angle_degrees, options.skip_interior_groups);
   if (!surface.ok()) return surface.status();
   absl::StatusOr<SurfaceProjector> projector = SurfaceProjector::Build(mesh, *surface);
   if (!projector.ok()) return projector.status();

@@ -29,6 +29,7 @@ inline constexpr double kWallDistanceTolerance = 1e-3;
 
 struct SlideOptions {
   std::span<const GroupedFace> groups;  // surface groups of boundary faces (boundary_surface.h)
+  bool skip_interior_groups = false;    // ExtractBoundarySurface's: a file's interfaces
   double feature_angle_degrees = kDefaultFeatureAngleDegrees;
   bool slide_boundary = true;  // SmoothingParams::slide_boundary
   bool keep_layers = false;    // SmoothingParams::keep_layers: describe the columns to keep
@@ -61,7 +62,12 @@ class SurfaceSlide final : public BoundarySlide {
  private:
   SurfaceSlide(const SlideOptions& options, BoundarySurface surface, SurfaceProjector projector,
                LayerColumns layers, std::unique_ptr<WallDistance> walls)
-      : options_(options),
+      : options_{{},
+                 options.skip_interior_groups,
+                 options.feature_angle_degrees,
+                 options.slide_boundary,
+                 options.keep_layers},  // the groups are copied
+
         surface_(std::move(surface)),
         projector_(std::move(projector)),
         layers_(std::move(layers)),

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 
+#include "absl/strings/str_cat.h"
 #include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "getme/elements/element_quality.h"
@@ -222,6 +223,147 @@ TEST(CliSmooth, BoundarySlideReportsWhatSlidAndLosesNothingOnANearOptimalMesh) {
   EXPECT_GE(Number(slid_result, "q_mean"), Number(held_result, "q_mean"));
   std::filesystem::remove(held_output);
   std::filesystem::remove(slid_output);
+}
+
+// A 4 × 4 × 4 cube of unit hexahedra as MSH 2.2, its top face z = 4 written as quads in two
+// physical groups split along x = 2 (tags 7 and 8) when `tagged`, else in none (tag 0). Top-face
+// nodes inside the face are moved up to 0.3 within it (along y only on the group line x = 2),
+// interior nodes up to 0.3 in each axis, so smoothing wants to move the top face's nodes.
+std::string GroupedCubeMsh(bool tagged) {
+  constexpr int n = 4;
+  const auto id = [](int i, int j, int k) { return 1 + i + (n + 1) * (j + (n + 1) * k); };
+  std::string text = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n";
+  text += std::to_string((n + 1) * (n + 1) * (n + 1)) + "\n";
+  std::uint64_t state = 12345;
+  const auto jitter = [&]() {  // deterministic, in [-0.3, 0.3]
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 0.6 * static_cast<double>(state >> 11) / static_cast<double>(1ULL << 53) - 0.3;
+  };
+  for (int k = 0; k <= n; ++k) {
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        double x = i, y = j, z = k;
+        const bool inside_xy = i > 0 && i < n && j > 0 && j < n;
+        if (inside_xy && k > 0 && k < n) {
+          x += jitter();
+          y += jitter();
+          z += jitter();
+        } else if (inside_xy && k == n) {
+          if (i != n / 2) x += jitter();
+          y += jitter();
+        }
+        text += absl::StrCat(id(i, j, k), " ", x, " ", y, " ", z, "\n");
+      }
+    }
+  }
+  text += "$EndNodes\n$Elements\n" + std::to_string(n * n * n + n * n) + "\n";
+  int element = 1;
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        text += absl::StrCat(element++, " 5 2 1 1 ", id(i, j, k), " ", id(i + 1, j, k), " ",
+                             id(i + 1, j + 1, k), " ", id(i, j + 1, k), " ", id(i, j, k + 1), " ",
+                             id(i + 1, j, k + 1), " ", id(i + 1, j + 1, k + 1), " ",
+                             id(i, j + 1, k + 1), "\n");
+      }
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int tag = tagged ? (i < n / 2 ? 7 : 8) : 0;
+      text += absl::StrCat(element++, " 3 2 ", tag, " ", tag, " ", id(i, j, n), " ",
+                           id(i + 1, j, n), " ", id(i + 1, j + 1, n), " ", id(i, j + 1, n), "\n");
+    }
+  }
+  return text + "$EndElements\n";
+}
+
+TEST(CliSmooth, PhysicalGroupsOfTheFileKeepTheirNodes) {
+  // With the top face in two physical groups, their common line x = 2 is a feature curve: its
+  // nodes slide along it and keep x = 2 exactly (read back from the output, independently of
+  // the projector), and no top node crosses to the other group. Without the groups the same
+  // nodes are ordinary face nodes and the smoother moves them off the line.
+  double largest_off_line[2] = {0.0, 0.0};
+  for (const bool tagged : {false, true}) {
+    const std::string input = TempPath(tagged ? "tagged.msh" : "untagged.msh");
+    const std::string output = TempPath(tagged ? "tagged.vtk" : "untagged.vtk");
+    std::ofstream(input) << GroupedCubeMsh(tagged);
+    const testing::RunResult run = RunGetme(
+        {"smooth", input, output, "--json", "--quiet", "--threads", "2", "--boundary", "slide"});
+    ASSERT_EQ(run.exit_status, 0) << run.err;
+    const JsonValue result = JsonLines(run.out).back();
+    const JsonValue* slide = result.Find("boundary_slide");
+    ASSERT_NE(slide, nullptr) << run.out;
+    EXPECT_EQ(Number(*slide, "surface_groups"), tagged ? 3 : 1);
+    EXPECT_EQ(Number(*slide, "interior_grouped_faces"), 0);
+    absl::StatusOr<formats::UnstructuredGrid> grid = formats::ReadVtkFile(output);
+    ASSERT_TRUE(grid.ok()) << grid.status();
+    const formats::DataArray& points = grid->points;
+    for (int j = 1; j < 4; ++j) {
+      // Node (2, j, 4) in the file's numbering, 0-based here.
+      const std::int64_t node = 2 + 5 * (j + 5 * 4);
+      largest_off_line[tagged] =
+          std::max(largest_off_line[tagged], std::abs(points.AsDouble(3 * node) - 2.0));
+      EXPECT_NEAR(points.AsDouble(3 * node + 2), 4.0, 1e-12);
+    }
+    if (tagged) {
+      for (int j = 0; j <= 4; ++j) {
+        for (int i = 0; i <= 4; ++i) {
+          const std::int64_t node = i + 5 * (j + 5 * 4);
+          const double x = points.AsDouble(3 * node);
+          if (i < 2) EXPECT_LE(x, 2.0) << "node " << node;
+          if (i > 2) EXPECT_GE(x, 2.0) << "node " << node;
+        }
+      }
+    }
+    std::filesystem::remove(input);
+    std::filesystem::remove(output);
+  }
+  EXPECT_EQ(largest_off_line[true], 0.0);
+  EXPECT_GT(largest_off_line[false], 1e-3);
+}
+
+TEST(CliSmooth, KeepLayersReportsTheColumnsAndKeepsTheirHeights) {
+  // getme-meshgen's hexahedral layer block (layer_hex_block.h) through the CLI: the JSON result
+  // reports its 36 columns of 10 layers, the first layer's height unchanged and the layers'
+  // quality risen; the heights are checked again from the output's z coordinates (the wall is
+  // z = 0).
+  const std::string input = TempPath("layers.vtk");
+  const std::string output = TempPath("layers-out.vtk");
+  const testing::RunResult made =
+      testing::RunProgram(std::string(GETME_BINARY_DIR) + "/bin/getme-meshgen",
+                          {"hex-layers", input, "--size", "6,6,10"});
+  ASSERT_EQ(made.exit_status, 0) << made.err;
+  const testing::RunResult run =
+      RunGetme({"smooth", input, output, "--json", "--quiet", "--threads", "2", "--keep-layers"});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const JsonValue result = JsonLines(run.out).back();
+  const JsonValue* layers = result.Find("layers");
+  ASSERT_NE(layers, nullptr) << run.out;
+  EXPECT_EQ(Number(*layers, "columns"), 36);
+  EXPECT_EQ(Number(*layers, "layers"), 10);
+  EXPECT_EQ(Number(*layers, "column_elements"), 360);
+  EXPECT_LE(Number(*layers, "max_height_change"), 0.01);
+  const JsonValue* before = layers->Find("before");
+  const JsonValue* after = layers->Find("after");
+  ASSERT_NE(before, nullptr);
+  ASSERT_NE(after, nullptr);
+  EXPECT_EQ(Number(*before, "first_min"), Number(*after, "first_min"));
+  EXPECT_GT(Number(*after, "q_mean"), Number(*before, "q_mean"));
+  EXPECT_LT(Number(*after, "mean_lean_degrees"), Number(*before, "mean_lean_degrees"));
+  absl::StatusOr<formats::UnstructuredGrid> in = formats::ReadVtkFile(input);
+  absl::StatusOr<formats::UnstructuredGrid> out = formats::ReadVtkFile(output);
+  ASSERT_TRUE(in.ok() && out.ok());
+  constexpr std::int64_t kPerLevel = 7 * 7;
+  for (std::int64_t node = kPerLevel; node < in->point_count(); ++node) {
+    const double h_in =
+        in->points.AsDouble(3 * node + 2) - in->points.AsDouble(3 * (node - kPerLevel) + 2);
+    const double h_out =
+        out->points.AsDouble(3 * node + 2) - out->points.AsDouble(3 * (node - kPerLevel) + 2);
+    EXPECT_NEAR(h_out / h_in, 1.0, 0.01) << "node " << node;
+  }
+  std::filesystem::remove(input);
+  std::filesystem::remove(output);
 }
 
 TEST(CliErrors, BoundaryOptionsAreChecked) {

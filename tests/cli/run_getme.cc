@@ -34,7 +34,10 @@ std::string TempPath(const std::string& name) {
 }
 
 RunResult RunGetme(const std::vector<std::string>& args) {
-  const std::string binary = std::string(GETME_BINARY_DIR) + "/bin/getme";
+  return RunProgram(std::string(GETME_BINARY_DIR) + "/bin/getme", args);
+}
+
+RunResult RunProgram(const std::string& binary, const std::vector<std::string>& args) {
   const std::string out_path = TempPath("stdout");
   const std::string err_path = TempPath("stderr");
   posix_spawn_file_actions_t actions;

@@ -14,6 +14,8 @@ struct RunResult {
 // Runs the built `getme` executable (GETME_BINARY_DIR/bin/getme) with `args`, stdout and stderr
 // captured through files (so stderr is not a terminal).
 RunResult RunGetme(const std::vector<std::string>& args);
+// The same for any executable (e.g. GETME_BINARY_DIR/bin/getme-meshgen to make an input).
+RunResult RunProgram(const std::string& binary, const std::vector<std::string>& args);
 
 // A path in the test temp directory, unique to the running test.
 std::string TempPath(const std::string& name);
