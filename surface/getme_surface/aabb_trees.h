@@ -44,9 +44,14 @@ struct IndexedItems {
     tree.accelerate_distance_queries();
     tree.closest_point(Point(0.0, 0.0, 0.0));
   }
-  // The nearest point of the items to `point`; `point` itself when there are none.
-  Vec3 Nearest(const Vec3& point) const {
+  // The nearest point of the items to `point`; `point` itself when there are none. `near`, if
+  // given, must be a point of the items: the search starts with it as the best so far instead
+  // of asking the tree's k-d tree of corners for one.
+  Vec3 Nearest(const Vec3& point, const Vec3* near = nullptr) const {
     if (items.empty() || !point.allFinite()) return point;
+    if (near != nullptr && near->allFinite()) {
+      return ToVec3(tree.closest_point(ToPoint(point), ToPoint(*near)));
+    }
     return ToVec3(tree.closest_point(ToPoint(point)));
   }
 };

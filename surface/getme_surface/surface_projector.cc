@@ -48,20 +48,21 @@ SurfaceProjector::SurfaceProjector(SurfaceProjector&&) noexcept = default;
 SurfaceProjector& SurfaceProjector::operator=(SurfaceProjector&&) noexcept = default;
 SurfaceProjector::~SurfaceProjector() = default;
 
-Vec3 SurfaceProjector::OnGroup(int group, const Vec3& point) const {
-  return trees_->groups[group].Nearest(point);
+Vec3 SurfaceProjector::OnGroup(int group, const Vec3& point, const Vec3* near) const {
+  return trees_->groups[group].Nearest(point, near);
 }
 
-Vec3 SurfaceProjector::OnCurve(int curve, const Vec3& point) const {
-  return trees_->curves[curve].Nearest(point);
+Vec3 SurfaceProjector::OnCurve(int curve, const Vec3& point, const Vec3* near) const {
+  return trees_->curves[curve].Nearest(point, near);
 }
 
-Vec3 SurfaceProjector::Project(BoundaryNodeKind kind, int support, const Vec3& point) const {
+Vec3 SurfaceProjector::Project(BoundaryNodeKind kind, int support, const Vec3& point,
+                               const Vec3* near) const {
   switch (kind) {
     case BoundaryNodeKind::kSurface:
-      return OnGroup(support, point);
+      return OnGroup(support, point, near);
     case BoundaryNodeKind::kFeature:
-      return OnCurve(support, point);
+      return OnCurve(support, point, near);
     case BoundaryNodeKind::kInterior:
     case BoundaryNodeKind::kCorner:
       break;

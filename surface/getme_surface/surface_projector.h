@@ -30,14 +30,19 @@ class SurfaceProjector {
   SurfaceProjector& operator=(SurfaceProjector&&) noexcept;
   ~SurfaceProjector();
 
-  // The nearest point to `point` on the faces of `group` (0 ≤ group < group_count()).
-  Vec3 OnGroup(int group, const Vec3& point) const;
-  // The nearest point to `point` on feature curve `curve` (0 ≤ curve < curve_count()).
-  Vec3 OnCurve(int curve, const Vec3& point) const;
+  // The nearest point to `point` on the faces of `group` (0 ≤ group < group_count()). `near`, if
+  // given, must be a point of them (a sliding node's position before its move): the search
+  // starts from it instead of from a search for the nearest triangle corner, which halves a
+  // query's cost when the move is short.
+  Vec3 OnGroup(int group, const Vec3& point, const Vec3* near = nullptr) const;
+  // The nearest point to `point` on feature curve `curve` (0 ≤ curve < curve_count()); `near` as
+  // above, a point of the curve.
+  Vec3 OnCurve(int curve, const Vec3& point, const Vec3* near = nullptr) const;
   // Where a node of kind `kind` with support `support` (BoundarySurface) at `point` belongs:
   // OnGroup for kSurface, OnCurve for kFeature, `point` itself otherwise (interior nodes are not
   // the projector's business, corners do not move).
-  Vec3 Project(BoundaryNodeKind kind, int support, const Vec3& point) const;
+  Vec3 Project(BoundaryNodeKind kind, int support, const Vec3& point,
+               const Vec3* near = nullptr) const;
   // The distance from `point` to the nearest face of any group.
   double DistanceToSurface(const Vec3& point) const;
 

@@ -30,8 +30,8 @@ bool SurfaceSlide::Slides(NodeId node) const {
   return options_.keep_layers || layers_.level[node] < 0;
 }
 
-Vec3 SurfaceSlide::Project(NodeId node, const Vec3& point) const {
-  return projector_.Project(surface_.kind[node], surface_.support[node], point);
+Vec3 SurfaceSlide::Project(NodeId node, const Vec3& point, const Vec3* near) const {
+  return projector_.Project(surface_.kind[node], surface_.support[node], point, near);
 }
 
 std::optional<Vec3> SurfaceSlide::OnColumn(std::int64_t index, const Vec3& from,

@@ -41,7 +41,7 @@ class SurfaceSlide final : public BoundarySlide {
                                                              const SlideOptions& options = {});
 
   bool Slides(NodeId node) const override;
-  Vec3 Project(NodeId node, const Vec3& point) const override;
+  Vec3 Project(NodeId node, const Vec3& point, const Vec3* near = nullptr) const override;
   double DistanceToSurface(const Vec3& point) const override;
   const KeptLayers* kept_layers() const override { return options_.keep_layers ? &kept_ : nullptr; }
   // The point of the ray at the node's input wall distance, the distance along it corrected by

@@ -66,6 +66,16 @@ void ExpectNearestAgreesWithBruteForce(const Mesh& mesh, double spread) {
   absl::StatusOr<SurfaceProjector> projector = SurfaceProjector::Build(mesh, *surface);
   ASSERT_TRUE(projector.ok()) << projector.status();
   const std::vector<Triangle3> triangles = Triangles(mesh, *surface, 0);
+  // A boundary node, a different one each trial: a point of the surface to start a search from.
+  std::vector<NodeId> boundary_nodes;
+  for (const BoundaryFace& face : surface->faces) {
+    boundary_nodes.insert(boundary_nodes.end(), face.nodes.begin(), face.nodes.begin() + face.size);
+  }
+  const auto mesh_point = [&](int trial) {
+    const NodeId node =
+        boundary_nodes[static_cast<std::size_t>(trial * 7919) % boundary_nodes.size()];
+    return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
+  };
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> coordinate(-spread, spread);
   for (int trial = 0; trial < 500; ++trial) {
@@ -77,6 +87,12 @@ void ExpectNearestAgreesWithBruteForce(const Mesh& mesh, double spread) {
     // ...and lies on the surface.
     EXPECT_LE(BruteForceDistance(nearest, triangles), 1e-12) << "trial " << trial;
     EXPECT_NEAR(projector->DistanceToSurface(p), expected, 1e-12 * (1.0 + expected));
+    // Started from a point of the surface (as a sliding node's move starts from where it was),
+    // the search finds an equally near point, whichever point that is.
+    const Vec3 start = mesh_point(trial);
+    const Vec3 from_start = projector->OnGroup(0, p, &start);
+    EXPECT_NEAR((from_start - p).norm(), expected, 1e-12 * (1.0 + expected)) << "trial " << trial;
+    EXPECT_LE(BruteForceDistance(from_start, triangles), 1e-12) << "trial " << trial;
   }
 }
 

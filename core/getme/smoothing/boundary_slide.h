@@ -22,8 +22,10 @@ class BoundarySlide {
   virtual ~BoundarySlide() = default;
   // Whether boundary node `node` slides; false keeps it fixed (a corner, say).
   virtual bool Slides(NodeId node) const = 0;
-  // Where sliding node `node` belongs when a smoother has put it at `point`.
-  virtual Vec3 Project(NodeId node, const Vec3& point) const = 0;
+  // Where sliding node `node` belongs when a smoother has put it at `point`. `near`, if given, is
+  // a point where the node already belongs (its position before the move): a nearest-point
+  // search that starts from it prunes most of the surface at once.
+  virtual Vec3 Project(NodeId node, const Vec3& point, const Vec3* near = nullptr) const = 0;
   // How far `point` is from the input's boundary surface: the result check's measure for sliding
   // boundary nodes.
   virtual double DistanceToSurface(const Vec3& point) const = 0;

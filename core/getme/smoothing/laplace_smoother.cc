@@ -50,7 +50,8 @@ absl::StatusOr<PhaseSummary> RunLaplace(SmoothingContext& context) {
             if (context.movable[node] && neighbours.Row(node).size() > 0) {
               const auto id = static_cast<NodeId>(node);
               const Point mean = NeighbourMean(mesh, neighbours, id);
-              const Vec3 placed = context.Placed(id, Vec3(mean.x, mean.y, mean.z));
+              const Vec3 placed =
+                  context.Placed(id, Vec3(mean.x, mean.y, mean.z), Vec3(p.x, p.y, p.z));
               p = {placed[0], placed[1], placed[2]};
             }
             next_x[node] = p.x;
@@ -99,7 +100,8 @@ absl::StatusOr<PhaseSummary> RunSmartLaplace(SmoothingContext& context) {
       for (ElementId e : elements) old_sum += context.quality[e];
       const Point old_position{x[node], y[node], z[node]};
       const Point mean = NeighbourMean(mesh, neighbours, node);
-      const Vec3 target = context.Placed(node, Vec3(mean.x, mean.y, mean.z));
+      const Vec3 target = context.Placed(node, Vec3(mean.x, mean.y, mean.z),
+                                         Vec3(old_position.x, old_position.y, old_position.z));
       x[node] = target[0];
       y[node] = target[1];
       z[node] = target[2];

@@ -77,7 +77,7 @@ class ColumnMover {
       for (std::size_t i = 0; i < moved_.size(); ++i) {
         const NodeId node = moved_[i];
         if (kept_index_[i] < 0) {
-          wall_now = slide.Project(node, old_[i] + step * (wall_target - old_[i]));
+          wall_now = slide.Project(node, old_[i] + step * (wall_target - old_[i]), &old_[i]);
           Place(mesh_, node, wall_now);
           normal = ColumnNormal(c);
           continue;

@@ -196,7 +196,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   double alpha = context.params.polish_over_relaxation;
   for (int attempt = -1; attempt <= context.params.polish_backtracking_steps; ++attempt) {
     // A sliding boundary node's step goes back onto its surface before it is judged.
-    const Vec3 trial = context.Placed(node, start + alpha * d);
+    const Vec3 trial = context.Placed(node, start + alpha * d, start);
     x[node] = trial[0];
     y[node] = trial[1];
     z[node] = trial[2];

@@ -140,8 +140,10 @@ std::int64_t SequentialSubstep::TransformWorst() {
       const NodeBackup& from = pick_backup_[i];
       const NodeBackup& to = pick_target_[i];
       const Vec3 placed = context_.Placed(
-          from.node, Vec3(from.x + fraction * (to.x - from.x), from.y + fraction * (to.y - from.y),
-                          from.z + fraction * (to.z - from.z)));
+          from.node,
+          Vec3(from.x + fraction * (to.x - from.x), from.y + fraction * (to.y - from.y),
+               from.z + fraction * (to.z - from.z)),
+          Vec3(from.x, from.y, from.z));
       x[from.node] = placed[0];
       y[from.node] = placed[1];
       z[from.node] = placed[2];

@@ -124,8 +124,8 @@ void SimultaneousIteration::UpdateNodeRange(SmoothingContext& context, std::int6
     }
     // Σ w_j = 0: all adjacent elements are regular, the node is already optimal (Sec. 3.1).
     if (sw > 0.0) {
-      const Vec3 placed =
-          context.Placed(static_cast<NodeId>(node), Vec3(sx / sw, sy / sw, sz / sw));
+      const Vec3 placed = context.Placed(static_cast<NodeId>(node), Vec3(sx / sw, sy / sw, sz / sw),
+                                         Vec3(x[node], y[node], z[node]));
       x[node] = placed[0];
       y[node] = placed[1];
       z[node] = placed[2];
@@ -184,7 +184,9 @@ std::int64_t SimultaneousIteration::RepairInvalid(SmoothingContext& context) {
       // A sliding node's part-way point is off a curved surface: back onto it. Not at keep = 0,
       // where the node must be exactly at p_old for the repair to end with a valid element.
       if (keep > 0.0 && context.sliding[node]) {
-        const Vec3 placed = context.Placed(node, Vec3(x[node], y[node], z[node]));
+        const Vec3 placed =
+            context.Placed(node, Vec3(x[node], y[node], z[node]),
+                           Vec3(previous_.x[node], previous_.y[node], previous_.z[node]));
         x[node] = placed[0];
         y[node] = placed[1];
         z[node] = placed[2];

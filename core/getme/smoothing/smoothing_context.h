@@ -47,9 +47,10 @@ struct SmoothingContext {
 
   double ElapsedSeconds() const;
   // Where a smoother that put `node` at `point` must put it: on its surface for a sliding node,
-  // `point` itself for any other. Every phase passes each new position through this.
-  Vec3 Placed(NodeId node, const Vec3& point) const {
-    return sliding[node] ? slide->Project(node, point) : point;
+  // `point` itself for any other. Every phase passes each new position through this, with the
+  // node's position before the move (`from`, where it belongs) to start the search from.
+  Vec3 Placed(NodeId node, const Vec3& point, const Vec3& from) const {
+    return sliding[node] ? slide->Project(node, point, &from) : point;
   }
   bool Cancelled() const { return cancel != nullptr && cancel->cancelled(); }
   void Report(const ProgressEvent& event) const {

@@ -194,7 +194,7 @@ void Untangler::UntangleNode(NodeId node) {
     double f_new = f;
     bool accepted = false;
     for (int attempt = 0; attempt <= kBacktrackingSteps; ++attempt) {
-      place(context_.Placed(node, start + alpha * d));
+      place(context_.Placed(node, start + alpha * d, start));
       f_new = NodeObjective<false>(node, nullptr, nullptr);
       if (f_new <= f + 1e-4 * alpha * slope) {  // Armijo
         accepted = true;
