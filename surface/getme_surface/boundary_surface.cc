@@ -37,6 +37,7 @@ Vec3 UnitNormal(const Mesh& mesh, const BoundaryFace& face) {
 std::vector<BoundaryFace> CollectBoundaryFaces(const Mesh& mesh) {
   struct Use {
     BoundaryFace face;
+    ElementId element = -1;
     int count = 0;
   };
   absl::flat_hash_map<SortedFace, Use> uses;
@@ -48,13 +49,31 @@ std::vector<BoundaryFace> CollectBoundaryFaces(const Mesh& mesh) {
         BoundaryFace face{{-1, -1, -1, -1}, table_face.size, 0};
         for (int k = 0; k < table_face.size; ++k) face.nodes[k] = ids[table_face.nodes[k]];
         Use& use = uses[Sorted(face.nodes, face.size)];
-        if (use.count++ == 0) use.face = face;
+        if (use.count++ == 0) {
+          use.face = face;
+          use.element = e;
+        }
       }
     });
   }
   std::vector<std::pair<SortedFace, BoundaryFace>> boundary;
   for (const auto& [key, use] : uses) {
-    if (use.count == 1) boundary.emplace_back(key, use.face);
+    if (use.count != 1) continue;
+    // Turned out of its element: the element tables list some faces inward and some outward
+    // (a tetrahedron's face 0, a hexahedron's faces 0 and 5), and faces whose normals are to be
+    // compared across an edge must turn alike.
+    BoundaryFace face = use.face;
+    const std::span<const NodeId> ids = mesh.element_nodes(use.element);
+    Vec3 element_centre = Vec3::Zero();
+    for (const NodeId node : ids) element_centre += Position(mesh, node);
+    element_centre /= static_cast<double>(ids.size());
+    Vec3 face_centre = Vec3::Zero();
+    for (int k = 0; k < face.size; ++k) face_centre += Position(mesh, face.nodes[k]);
+    face_centre /= face.size;
+    if (UnitNormal(mesh, face).dot(face_centre - element_centre) < 0.0) {
+      ReverseFace(face.nodes, face.size);
+    }
+    boundary.emplace_back(key, face);
   }
   std::sort(boundary.begin(), boundary.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });

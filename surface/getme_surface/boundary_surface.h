@@ -29,7 +29,7 @@ namespace getme::surface {
 inline constexpr double kDefaultFeatureAngleDegrees = 45.0;
 
 struct BoundaryFace {
-  std::array<NodeId, 4> nodes;  // as the element lists them (so all faces turn the same way)
+  std::array<NodeId, 4> nodes;  // turned so that the normal points out of the mesh
   int size;                     // 3 or 4
   int group;                    // surface group: 0 unless the caller's groups say otherwise
 };

@@ -22,4 +22,9 @@ inline SortedFace Sorted(const std::array<NodeId, 4>& nodes, int size) {
   return sorted;
 }
 
+// Turns a face (3 or 4 nodes) the other way round, keeping its first node.
+inline void ReverseFace(std::array<NodeId, 4>& nodes, int size) {
+  std::swap(nodes[1], nodes[size - 1]);
+}
+
 }  // namespace getme::surface

@@ -149,7 +149,23 @@ class ColumnFinder {
 
   // Grows one column from the wall face `crossing` entered its first element by.
   void Grow(Crossing crossing) {
-    columns_.wall_faces.push_back(crossing.entry);
+    // The wall face turned into the column, whatever way the element's table lists it, so that
+    // the normals of the wall faces around a node add up (kept_columns.h).
+    std::array<NodeId, 4> wall = crossing.entry;
+    const auto centre = [&](const std::array<NodeId, 4>& nodes) {
+      Vec3 sum = Vec3::Zero();
+      for (int k = 0; k < crossing.size; ++k) sum += Position(mesh_, nodes[k]);
+      return Vec3(sum / crossing.size);
+    };
+    const Vec3 a = Position(mesh_, wall[0]);
+    const Vec3 b = Position(mesh_, wall[1]);
+    const Vec3 c = Position(mesh_, wall[2]);
+    const Vec3 normal = crossing.size == 3 ? Vec3((b - a).cross(c - a))
+                                           : Vec3((c - a).cross(Position(mesh_, wall[3]) - b));
+    if (normal.dot(centre(crossing.exit) - centre(crossing.entry)) < 0.0) {
+      ReverseFace(wall, crossing.size);
+    }
+    columns_.wall_faces.push_back(wall);
     columns_.wall_face_sizes.push_back(crossing.size);
     for (int k = 0; k < crossing.size; ++k) Assign(crossing.entry[k], 0, -1);
     while (true) {

@@ -50,7 +50,7 @@ struct LayerColumns {
   // Per node: 1 where two columns disagree on the node's level or the node below it (colliding
   // layers); such a node belongs to no column.
   std::vector<std::uint8_t> conflict;
-  // The faces the columns start at, nodes as the element lists them.
+  // The faces the columns start at, each turned so that its normal points into its column.
   std::vector<std::array<NodeId, 4>> wall_faces;
   std::vector<int> wall_face_sizes;
   std::vector<ElementId> elements;  // the columns' elements, ascending
