@@ -1,4 +1,4 @@
-#!/ usr / bin / python3
+#!/usr/bin/python3
 """Draws a cut through volume meshes, side by side, as SVG or PNG (docs/boundary.md's pictures).
 
     /usr/bin/python3 scripts/render_cut.py OUT.svg --axis y --at 3 --width 0.3 \
@@ -19,7 +19,7 @@ import tempfile
 
 import meshio
 
-#Element edges by node index, in VTK 's (and meshio' s) node order.
+# Element edges by node index, in VTK's (and meshio's) node order.
 EDGES = {
     "tetra": [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)],
     "hexahedron": [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4),
