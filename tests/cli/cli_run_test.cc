@@ -278,6 +278,50 @@ std::string GroupedCubeMsh(bool tagged) {
   return text + "$EndElements\n";
 }
 
+TEST(CliSmooth, SlidingLiftsMeshesWhoseWorstElementsTouchTheBoundary) {
+  // bench/boundary_meshes.py's thin slice of a ball (|z| < 0.06, tetrahedra about 1.5 deep) and
+  // spherical shell (radii 1 to 1.08): nearly every node is on the boundary, so with it held the
+  // smoother can hardly move anything. Sliding must lift q_min at least 1.3 × and lower neither
+  // measure (issue 15). The slice's flat faces are checked from the output's coordinates: every
+  // node that was on z = ±0.06 still is, and no node left the ball.
+  for (const std::string name : {"sphere-slice", "shell"}) {
+    const std::string input = std::string(GETME_BOUNDARY_MESH_DIR) + "/" + name + ".msh";
+    const std::string held_output = TempPath(name + "-held.vtk");
+    const std::string slid_output = TempPath(name + "-slid.vtk");
+    const testing::RunResult held =
+        RunGetme({"smooth", input, held_output, "--json", "--quiet", "--threads", "2"});
+    const testing::RunResult slid = RunGetme({"smooth", input, slid_output, "--json", "--quiet",
+                                              "--threads", "2", "--boundary", "slide"});
+    ASSERT_EQ(held.exit_status, 0) << held.err;
+    ASSERT_EQ(slid.exit_status, 0) << slid.err;
+    const JsonValue held_result = JsonLines(held.out).back();
+    const JsonValue slid_result = JsonLines(slid.out).back();
+    EXPECT_GE(Number(slid_result, "q_min"), 1.3 * Number(held_result, "q_min")) << name;
+    EXPECT_GE(Number(slid_result, "q_mean"), Number(held_result, "q_mean")) << name;
+    const JsonValue* slide = slid_result.Find("boundary_slide");
+    ASSERT_NE(slide, nullptr);
+    EXPECT_LE(Number(*slide, "max_distance"), 1e-9) << name;
+    EXPECT_GE(Number(*slide, "surface_groups"), 3) << name;  // the file's groups, and group 0
+    if (std::string(name) == "sphere-slice") {
+      absl::StatusOr<formats::UnstructuredGrid> before = formats::ReadVtkFile(held_output);
+      absl::StatusOr<formats::UnstructuredGrid> after = formats::ReadVtkFile(slid_output);
+      ASSERT_TRUE(before.ok() && after.ok());
+      for (std::int64_t node = 0; node < before->point_count(); ++node) {
+        const double z_before = before->points.AsDouble(3 * node + 2);
+        const double z_after = after->points.AsDouble(3 * node + 2);
+        if (std::abs(std::abs(z_before) - 0.06) < 1e-12) {
+          EXPECT_NEAR(z_after, z_before, 1e-12) << "node " << node;
+        }
+        const double r = std::hypot(after->points.AsDouble(3 * node),
+                                    after->points.AsDouble(3 * node + 1), z_after);
+        EXPECT_LE(r, 1.0 + 1e-12) << "node " << node;
+      }
+    }
+    std::filesystem::remove(held_output);
+    std::filesystem::remove(slid_output);
+  }
+}
+
 TEST(CliSmooth, PhysicalGroupsOfTheFileKeepTheirNodes) {
   // With the top face in two physical groups, their common line x = 2 is a feature curve: its
   // nodes slide along it and keep x = 2 exactly (read back from the output, independently of
