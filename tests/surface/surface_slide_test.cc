@@ -13,6 +13,8 @@
 #include <string>
 
 #include "getme/smoothing/smoother.h"
+#include "getme/smoothing/smoothing_context.h"
+#include "getme/smoothing/worst_cluster.h"
 #include "surface_test_meshes.h"
 
 namespace getme::surface {
@@ -150,6 +152,48 @@ TEST(SurfaceSlideTest, EveryMethodKeepsTheBoundaryOnTheSurface) {
       }
     }
   }
+}
+
+}  // namespace
+}  // namespace getme::surface
+
+namespace getme::surface {
+namespace {
+
+TEST(SurfaceSlideTest, TheWorstClusterStageMovesSlidingNodesAlongTheirFaces) {
+  // The polish's worst-cluster stage called on the displaced cube with every interior node fixed,
+  // so that the sliding boundary nodes are the only free ones: its L-BFGS moves them, along their
+  // faces and edges (checked from the coordinates), and lifts q_min.
+  Mesh mesh = DisplacedCube(11);
+  for (NodeId node = 0; node < mesh.node_count(); ++node) {
+    if (BoundCount(mesh, node) == 0) mesh.set_fixed(node, true);
+  }
+  const Mesh input = mesh;
+  absl::StatusOr<std::unique_ptr<SurfaceSlide>> slide = SurfaceSlide::Build(mesh);
+  ASSERT_TRUE(slide.ok()) << slide.status();
+  SmoothingParams params;
+  params.slide_boundary = true;
+  ThreadPool pool(2);
+  const ProgressCallback no_progress;
+  SmoothingContext context(mesh, params, pool, no_progress, nullptr, slide->get());
+  SmoothingContext::Summary current = context.Summarize();
+  const double q_min_before = current.q_min;
+  PhaseSummary summary{Phase::kPolish, 0, 0.0, 0.0, 0.0, 0};
+  ASSERT_TRUE(RunWorstCluster(context, current, summary).ok());
+  EXPECT_GT(current.q_min, q_min_before);
+  EXPECT_EQ(current.invalid, 0);
+  std::int64_t moved = 0;
+  for (NodeId node = 0; node < input.node_count(); ++node) {
+    const double in[3] = {input.x()[node], input.y()[node], input.z()[node]};
+    const double out[3] = {mesh.x()[node], mesh.y()[node], mesh.z()[node]};
+    for (int c = 0; c < 3; ++c) {
+      if (OnBound(in[c]) || BoundCount(input, node) == 0) {
+        EXPECT_NEAR(out[c], in[c], 1e-12) << "node " << node;
+      }
+    }
+    moved += out[0] != in[0] || out[1] != in[1] || out[2] != in[2];
+  }
+  EXPECT_GT(moved, 0);
 }
 
 }  // namespace

@@ -145,6 +145,37 @@ void WriteCoordinates(Mesh& mesh, const Cluster& cluster, const std::vector<doub
   }
 }
 
+// A sliding node's share of the gradient turned into its surface (or curve): the move the
+// projection keeps of a small step along it, so that the search directions, and with them the
+// line search's slope, are ones the node can follow. Exact on a flat face or a straight edge.
+void TangentialGradient(const SmoothingContext& context, const Cluster& cluster,
+                        const std::vector<double>& x, std::vector<double>& g) {
+  for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
+    const NodeId node = cluster.nodes[i];
+    if (!context.sliding[node]) continue;
+    const Vec3 at(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+    const Vec3 gradient(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
+    const double length = gradient.norm();
+    if (!(length > 0.0)) continue;
+    // A step of a thousandth of the node's own length scale.
+    const double epsilon = 1e-3 * std::sqrt(cluster.scale2[i]) / length;
+    const Vec3 along = (context.Placed(node, at + epsilon * gradient, at) - at) / epsilon;
+    for (int k = 0; k < 3; ++k) g[3 * i + k] = along[k];
+  }
+}
+
+// The trial point of the line search with every sliding node put back onto its surface.
+void PlaceTrial(const SmoothingContext& context, const Cluster& cluster,
+                const std::vector<double>& x, std::vector<double>& trial) {
+  for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
+    const NodeId node = cluster.nodes[i];
+    if (!context.sliding[node]) continue;
+    const Vec3 placed = context.Placed(node, Vec3(trial[3 * i], trial[3 * i + 1], trial[3 * i + 2]),
+                                       Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]));
+    for (int k = 0; k < 3; ++k) trial[3 * i + k] = placed[k];
+  }
+}
+
 double Dot(const std::vector<double>& a, const std::vector<double>& b) {
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
@@ -165,6 +196,7 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
   double min_q = 0.0;
   double f = objective.Evaluate(min_q, &g);
   if (!std::isfinite(f)) return;
+  TangentialGradient(context, cluster, x, g);
   double best_min_q = min_q;
   std::vector<double> best_x = x;
   int best_iteration = 0;
@@ -219,6 +251,7 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
     bool accepted = false;
     for (int backtrack = 0; backtrack < kMaxBacktracks; ++backtrack) {
       for (std::size_t i = 0; i < n; ++i) trial[i] = x[i] + step * d[i];
+      PlaceTrial(context, cluster, x, trial);
       WriteCoordinates(mesh, cluster, trial);
       f_trial = objective.Evaluate(min_q, nullptr);
       if (f_trial <= f + kArmijo * step * slope) {
@@ -245,6 +278,7 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
     }
     const bool converged = f - f_trial <= kConverged * f;
     objective.Evaluate(min_q, &g_new);
+    TangentialGradient(context, cluster, trial, g_new);
     std::vector<double> s(n);
     std::vector<double> y(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -283,9 +317,7 @@ Cluster FindCluster(const SmoothingContext& context, double q_min, std::vector<i
     if (q > limit) continue;
     bool any_free = false;
     for (NodeId node : mesh.element_nodes(e)) {
-      // Sliding boundary nodes stay: L-BFGS moves nodes freely in space, and a projection after
-      // each step would break its line search.
-      if (!context.movable[node] || context.sliding[node]) continue;
+      if (!context.movable[node]) continue;
       any_free = true;
       if (variable_of[node] < 0) {
         variable_of[node] = 0;

@@ -25,7 +25,9 @@ namespace getme {
 // Element evaluations run in parallel and are summed in a fixed order, so any thread count gives
 // the same bits. q_min never falls; q_mean may fall a little, which is why RunPolish runs its mean
 // stage again afterwards. context.quality stays exact; `current` is the state handed on. One
-// progress event per kept round (Phase::kPolish, numbered on from summary.iterations).
+// progress event per kept round (Phase::kPolish, numbered on from summary.iterations). Sliding
+// boundary nodes take part: their gradient is turned into their surface and every trial point
+// put back onto it, so the search follows the surface (docs/boundary.md).
 absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summary& current,
                              PhaseSummary& summary);
 
