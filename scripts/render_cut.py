@@ -81,7 +81,7 @@ def main():
             f"set terminal {terminal} size {480 * columns},{360 * rows + 40} font 'sans,11'",
             f"set output '{args.output}'",
             f"set multiplot layout {rows},{columns} title '{args.title}'",
-            "unset key",
+            "unset key", "set termoption noenhanced",
             f"set xlabel '{view_names[0]}'", f"set ylabel '{view_names[1]}'",
         ]
         if args.equal:
