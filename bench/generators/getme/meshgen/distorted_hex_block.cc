@@ -14,13 +14,7 @@ absl::StatusOr<Mesh> DistortedHexBlock(int nx, int ny, int nz, double distortion
   }
   MeshDraft draft;
   const CubeGrid grid(draft, nx, ny, nz);
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        draft.AddElement(ElementType::kHexahedron, grid.CubeCorners(i, j, k));
-      }
-    }
-  }
+  grid.AddHexahedra(draft);
   JitterNodes(draft, grid.InteriorMoves(draft, distortion), seed);
   return std::move(draft).Build();
 }

@@ -28,13 +28,7 @@ absl::StatusOr<Mesh> LayeredHexBlock(int nx, int ny, int nz, double first_height
   }
   MeshDraft draft;
   const CubeGrid grid(draft, nx, ny, nz);
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        draft.AddElement(ElementType::kHexahedron, grid.CubeCorners(i, j, k));
-      }
-    }
-  }
+  grid.AddHexahedra(draft);
   // The layers' tops: level[k] is the height of grid level k.
   std::vector<double> level(static_cast<std::size_t>(nz) + 1, 0.0);
   double height = first_height;

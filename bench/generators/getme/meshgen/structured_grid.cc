@@ -21,6 +21,15 @@ std::array<NodeId, 8> CubeGrid::CubeCorners(int i, int j, int k) const {
       Node(i, j, k + 1), Node(i + 1, j, k + 1), Node(i + 1, j + 1, k + 1), Node(i, j + 1, k + 1)};
 }
 
+void CubeGrid::AddHexahedra(MeshDraft& draft) const {
+  for (int k = 0; k < nz_; ++k) {
+    for (int j = 0; j < ny_; ++j) {
+      for (int i = 0; i < nx_; ++i)
+        draft.AddElement(ElementType::kHexahedron, CubeCorners(i, j, k));
+    }
+  }
+}
+
 std::vector<double> CubeGrid::InteriorMoves(const MeshDraft& draft, double move) const {
   std::vector<double> moves(draft.node_count(), 0.0);
   for (int k = 1; k < nz_; ++k) {

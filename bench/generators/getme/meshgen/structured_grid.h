@@ -27,6 +27,8 @@ class CubeGrid {
   // The cube's corners in the hexahedron's paper order: bottom (k) counter-clockwise seen from
   // above, then the top (k + 1) in the same order.
   std::array<NodeId, 8> CubeCorners(int i, int j, int k) const;
+  // One hexahedron per cube, in the cubes' (i fastest, then j, then k) order.
+  void AddHexahedra(MeshDraft& draft) const;
   bool ContainsCube(int i, int j, int k) const {
     return i >= 0 && j >= 0 && k >= 0 && i < nx_ && j < ny_ && k < nz_;
   }
