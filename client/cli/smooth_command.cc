@@ -82,9 +82,7 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   }
   if (params.slide_boundary) {
     const surface::BoundarySurface& boundary = slide->surface();
-    report.boundary_surface =
-        events::BoundarySurfaceCounts{static_cast<std::int64_t>(boundary.feature_edges.size()),
-                                      boundary.curve_count, boundary.corner_count};
+    report.boundary_surface = surface::CountFeatures(boundary);
     spdlog::info("boundary slides: {} feature edges in {} curves, {} corners (feature angle {}°)",
                  boundary.feature_edges.size(), boundary.curve_count, boundary.corner_count,
                  params.feature_angle_degrees);
