@@ -103,7 +103,8 @@ def seconds(m):
 
 
 def phases(result):
-    names = {"untangle": "u", "simultaneous": "sim", "sequential": "seq", "polish": "pol"}
+    names = {"untangle": "u", "simultaneous": "sim", "sequential": "seq", "polish": "pol",
+             "layers": "lay"}
     return " ".join(f"{names.get(p['phase'], p['phase'])} {p['iterations']}/{p['seconds']:.3f}"
                     for p in result["phases"])
 

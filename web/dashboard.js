@@ -12,8 +12,9 @@ const SVG = 'http://www.w3.org/2000/svg';
 const PHASE_NAMES = {
   PHASE_UNTANGLE: 'untangle', PHASE_SIMULTANEOUS: 'simultaneous', PHASE_SEQUENTIAL: 'sequential',
   PHASE_WARPAGE: 'warpage', PHASE_SMART_LAPLACE: 'smart Laplace', PHASE_LAPLACE: 'Laplace',
-  PHASE_POLISH: 'polish',
+  PHASE_POLISH: 'polish', PHASE_LAYERS: 'layers',
 };
+const BOUNDARY_NAMES = { BOUNDARY_FIXED: 'fixed', BOUNDARY_SLIDE: 'slide', BOUNDARY_FREE: 'free' };
 const PHASE_COLOURS = ['#eef3ff', '#fff4e8', '#eefaf0', '#f6eefc'];
 const FINAL_STATES = new Set(['SUCCEEDED', 'FAILED', 'CANCELLED']);
 
@@ -112,7 +113,8 @@ function progressOf(job) {
   if (!latest.phase || latest.phase === 'PHASE_UNSPECIFIED') return '';
   const phase = PHASE_NAMES[latest.phase] || latest.phase;
   const unit = latest.phase === 'PHASE_SEQUENTIAL' || latest.phase === 'PHASE_WARPAGE' ? 'picks'
-    : latest.phase === 'PHASE_POLISH' ? 'sweeps' : 'iterations';
+    : latest.phase === 'PHASE_POLISH' ? 'sweeps' : latest.phase === 'PHASE_LAYERS' ? 'passes'
+      : 'iterations';
   const count = `${phase} · ${Number(latest.iteration).toLocaleString()} ${unit}`;
   return state === 'RUNNING' ? count : `${count} · ${latest.elapsedSeconds.toFixed(1)} s`;
 }
@@ -161,6 +163,7 @@ function select(id, { byHand = true } = {}) {
   $('histogram').replaceChildren();
   $('histogram').dataset.ready = 'false';
   $('histogram-note').textContent = 'shown when the job has succeeded';
+  $('boundary-report').textContent = '';
   draw();
   renderJobs();
   openEvents(selected);
@@ -179,7 +182,9 @@ function openEvents(job) {
     else addPoint(job, event);
   });
   events.addEventListener('result', (message) => {
-    drawHistogram(JSON.parse(message.data));
+    const result = JSON.parse(message.data);
+    drawHistogram(result);
+    showBoundaryReport(result);
   });
   events.addEventListener('end', (message) => {
     const final = JSON.parse(message.data);
@@ -352,6 +357,34 @@ function drawHistogram(result) {
     `${Number(result.iterationsSequential)} sequential picks, ${result.seconds.toFixed(2)} s`;
 }
 
+// The boundary the job ran with and, for a sliding boundary or kept layers, what they did (the
+// CLI's summary says the same: client/cli/text_reports.cc).
+function showBoundaryReport(result) {
+  const lines = [`boundary ${BOUNDARY_NAMES[result.boundary] || 'unspecified'}`];
+  const slide = result.boundarySlide;
+  if (slide && result.boundary === 'BOUNDARY_SLIDE') {
+    lines[0] += `: ${Number(slide.slidNodes)} of ${Number(slide.slidingNodes)} sliding nodes moved, ` +
+      `at most ${Number(slide.maxDistance.toPrecision(3))} from the input's surface; ` +
+      `${Number(slide.featureEdges)} feature edges in ${Number(slide.featureCurves)} curves, ` +
+      `${Number(slide.corners)} corners (fixed)`;
+  }
+  const layers = result.layers;
+  if (layers) {
+    const height = (name) => `${layers.before[name].toPrecision(4)} → ${layers.after[name].toPrecision(4)}`;
+    lines.push(`layers kept: ${Number(layers.columns)} columns of ${Number(layers.columnElements)} ` +
+      `elements, ${layers.layers} layers, ${Number(layers.layerNodes)} nodes held at their wall ` +
+      `distance; first-layer height min ${height('firstMin')}, mean ${height('firstMean')}, ` +
+      `max ${height('firstMax')}; lean ${height('meanLeanDegrees')}°; ` +
+      `largest height change ${Number(layers.maxHeightChange.toPrecision(3))}`);
+  }
+  $('boundary-report').replaceChildren(...lines.map((line) => {
+    const item = document.createElement('span');
+    item.textContent = line;
+    item.className = 'line';
+    return item;
+  }));
+}
+
 // ---- Demo job: a jittered tetrahedral block made here, posted as JSON ----------------------
 
 function demoMesh(cells) {
@@ -412,6 +445,8 @@ async function submitDemo(event) {
       polish: form.get('polish') === 'on',
       simultaneousHandoffWindow: '0',
       sequentialHandoffWindow: String(form.get('sequential')),
+      boundary: form.get('boundary'),
+      keepLayers: form.get('keepLayers') === 'on',
     },
     mesh: demoMesh(cells),
   };

@@ -365,13 +365,6 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
         "--keep-layers measures layer heights from the input's walls, which a free boundary "
         "moves: use it with --boundary fixed or slide");
   }
-  if ((options.smoothing.slide_boundary || options.smoothing.keep_layers) &&
-      !options.server.empty()) {
-    return absl::UnimplementedError(absl::StrCat(
-        options.smoothing.slide_boundary ? "--boundary slide" : "--keep-layers",
-        " runs in this process only for now: the service cannot do it yet (docs/boundary.md); "
-        "drop --server or the option"));
-  }
   if (auto s = CheckAccessFlags(options.access, !options.server.empty()); !s.ok()) return s;
   if (options.detach && options.server.empty()) {
     return absl::InvalidArgumentError("--detach needs --server HOST:PORT (a job to detach from)");

@@ -113,6 +113,12 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
   const events::SmoothReport report =
       MakeRemoteSmoothReport(options.input, options.output, options.smoothing.method,
                              run->document.grid, *sent, result->result);
+  if ((params.slide_boundary || params.keep_layers) &&
+      result->result.boundary() == v1::BOUNDARY_UNSPECIFIED) {
+    // A server that predates the field ignored the boundary it did not know and held it.
+    spdlog::warn("{} does not know --boundary slide or --keep-layers: it kept the boundary fixed",
+                 options.server);
+  }
   if (absl::Status status =
           WriteSmoothedFile(wire::CoordinatesOf(result->mesh), *run->output, run->document);
       !status.ok()) {

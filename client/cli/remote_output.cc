@@ -3,6 +3,7 @@
 #include "absl/strings/str_format.h"
 #include "events/json_output.h"
 #include "formats/grid_mesh.h"
+#include "getme_wire/boundary_reports.h"
 #include "getme_wire/enums.h"
 #include "getme_wire/reports.h"
 #include "getme_wire/status.h"
@@ -43,6 +44,10 @@ events::SmoothReport MakeRemoteSmoothReport(const std::string& input, const std:
   report.passthrough_cells =
       file.cells.size() - static_cast<std::int64_t>(sent.element_cells.size());
   report.result = wire::FromWireResult(result);
+  report.boundary = wire::BoundaryName(result.boundary());
+  wire::SurfaceReports surface = wire::FromWireSurfaceReports(result);
+  report.boundary_surface = surface.boundary_surface;
+  report.layers = std::move(surface.layers);
   return report;
 }
 

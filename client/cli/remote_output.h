@@ -21,7 +21,9 @@ namespace getme::cli {
 absl::Status WriteSmoothedFile(std::span<const double> coordinates, const OutputTarget& output,
                                formats::MeshDocument& document);
 
-// The report of a remote smoothing run, filled from the wire result and the sent mesh.
+// The report of a remote smoothing run, filled from the wire result and the sent mesh: the
+// boundary the job ran with and its surface and layer reports as well, so that `jobs fetch`,
+// which knows nothing of the job's parameters, reports them as `smooth --server` does.
 events::SmoothReport MakeRemoteSmoothReport(const std::string& input, const std::string& output,
                                             Method method, const formats::UnstructuredGrid& file,
                                             const remote::GridWireMesh& sent,

@@ -85,9 +85,7 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
   }
   if (params.slide_boundary) {
     const surface::BoundarySurface& boundary = slide->surface();
-    report.boundary_surface = events::BoundarySurfaceCounts{
-        static_cast<std::int64_t>(boundary.feature_edges.size()), boundary.curve_count,
-        boundary.corner_count, boundary.group_count, boundary.interior_grouped_faces};
+    report.boundary_surface = surface::CountFeatures(boundary);
     spdlog::info(
         "boundary slides: {} surface groups, {} feature edges in {} curves, {} corners (feature "
         "angle {}°); {} tagged faces not on the boundary (interfaces) left out",

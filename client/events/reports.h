@@ -10,21 +10,13 @@
 #include "getme/mesh/mesh_quality.h"
 #include "getme/smoothing/smoother.h"
 #include "getme/smoothing/smoothing_params.h"
+#include "getme_surface/boundary_surface_counts.h"
 #include "getme_surface/layer_report.h"
 
 namespace getme::events {
 
 // What a finished smoothing run reports, in text (summary table) or JSON (result line). Plain
 // data, so the gRPC client can fill it from the wire.
-// The input's boundary surface as `--boundary slide` saw it (surface/, docs/boundary.md).
-struct BoundarySurfaceCounts {
-  std::int64_t feature_edges = 0;
-  std::int64_t feature_curves = 0;
-  std::int64_t corners = 0;
-  std::int64_t surface_groups = 0;          // the file's tagged groups, plus group 0
-  std::int64_t interior_grouped_faces = 0;  // tagged faces not on the boundary (interfaces)
-};
-
 struct SmoothReport {
   std::string input;
   std::string output;
@@ -33,9 +25,10 @@ struct SmoothReport {
   std::array<std::int64_t, kElementTypeCount> elements_by_type{};
   std::int64_t passthrough_cells = 0;
   SmoothingResult result;
-  std::string boundary = "fixed";                         // fixed, free or slide
-  std::optional<BoundarySurfaceCounts> boundary_surface;  // with --boundary slide only
-  std::optional<surface::LayerReport> layers;             // with --keep-layers only
+  std::string boundary = "fixed";  // fixed, free or slide
+  // The input's boundary surface as `--boundary slide` saw it (surface/, docs/boundary.md).
+  std::optional<surface::BoundarySurfaceCounts> boundary_surface;  // with --boundary slide only
+  std::optional<surface::LayerReport> layers;                      // with --keep-layers only
 };
 
 // What `getme quality` reports.

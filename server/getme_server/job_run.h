@@ -24,7 +24,10 @@ struct JobResult {
 // Runs the engine on a job's mesh on the calling thread: smooths `work.mesh` in place, calling
 // `publish` with each progress event, and on success fills `work.summary` (quality before and
 // after with the caller's histogram bins, phases, iterations, nodes; the job id is the job's to
-// set). Fails with the engine's status; an invalid result names the caller's element ids too.
+// set). With a sliding boundary or kept layers (params.slide_boundary, keep_layers) it first builds
+// the input's surface and layer columns from `work.mesh` (surface/, as the CLI does; a mesh they
+// cannot be built from is InvalidArgument) and adds their reports to the summary. Fails with the
+// engine's status; an invalid result names the caller's element ids too.
 absl::Status RunSmoothing(JobResult& work, const SmoothingParams& params,
                           const std::function<void(const ProgressEvent&)>& publish,
                           const CancellationToken* cancel);

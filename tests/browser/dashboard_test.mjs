@@ -52,11 +52,19 @@ function startServer(extraArgs = [], logName = 'server.log') {
 const chartPoints = (page) => page.$eval('#chart', (svg) => Number(svg.dataset.points));
 const shownState = (page) => page.textContent('#job-state');
 
-async function submitDemoJob(page, { cells, method, simultaneous, sequential }) {
+async function fillDemoForm(page, {
+  cells, method, simultaneous, sequential, boundary = 'BOUNDARY_FIXED', keepLayers = false,
+}) {
   await page.fill('input[name=cells]', String(cells));
   await page.selectOption('select[name=method]', method);
   await page.fill('input[name=simultaneous]', String(simultaneous));
   await page.fill('input[name=sequential]', String(sequential));
+  await page.selectOption('select[name=boundary]', boundary);
+  await page.setChecked('input[name=keepLayers]', keepLayers);
+}
+
+async function submitDemoJob(page, options) {
+  await fillDemoForm(page, options);
   await page.click('#demo-submit');
   await page.waitForFunction(() => /queued/.test(document.getElementById('demo-status').textContent));
   return page.textContent('#job-id');
@@ -213,6 +221,36 @@ try {
   check('a job picked by hand stays selected when a newer one appears',
     kept === finished && hash === `#job=${finished}`, `shows ${kept}, URL ${hash}`);
   await fetch(`${url}v1/jobs/${running}:cancel`, { method: 'POST' });
+
+  // 6. The boundary field: a sliding boundary's report shows once the job has succeeded (the
+  // demo block is a cube: 4 x 12 feature edges in 12 curves, 8 corners), and kept layers with a
+  // free boundary are refused by the server, naming the fields.
+  const slid = await submitDemoJob(page, {
+    cells: 4, method: 'METHOD_SIMULTANEOUS', simultaneous: 50, sequential: 1,
+    boundary: 'BOUNDARY_SLIDE',
+  });
+  await page.waitForFunction(() => document.getElementById('job-state').textContent === 'SUCCEEDED');
+  const boundaryReport = await page.waitForFunction(() => {
+    const text = document.getElementById('boundary-report').textContent;
+    return text.includes('corners') ? text : null;
+  }).then((handle) => handle.jsonValue(), () => '');
+  check('a sliding boundary\'s report shows its features', boundaryReport.startsWith('boundary slide') &&
+    boundaryReport.includes('48 feature edges in 12 curves') && boundaryReport.includes('8 corners'),
+  `job ${slid}: ${boundaryReport}`);
+  const slidApi = await (await fetch(`${url}v1/jobs/${slid}`)).json();
+  check('the sliding job is listed as succeeded', slidApi.state === 'JOB_STATE_SUCCEEDED', slidApi.state);
+  await fillDemoForm(page, {
+    cells: 4, method: 'METHOD_SIMULTANEOUS', simultaneous: 50, sequential: 1,
+    boundary: 'BOUNDARY_FREE', keepLayers: true,
+  });
+  await page.click('#demo-submit');
+  const refused = await page.waitForFunction(() => {
+    const text = document.getElementById('demo-status').textContent;
+    return text.includes('INVALID_ARGUMENT') ? text : null;
+  }).then((handle) => handle.jsonValue(), () => '');
+  check('kept layers with a free boundary are refused, naming the fields',
+    refused.includes('keep_layers') && refused.includes('BOUNDARY_FREE'), refused);
+  await page.screenshot({ path: path.join(outputDir, 'dashboard-boundary.png'), fullPage: true });
 } catch (error) {
   check('browser run', false, error.stack || String(error));
 } finally {

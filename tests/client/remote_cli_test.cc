@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -11,6 +12,9 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_split.h"
+#include "formats/grid_mesh.h"
+#include "formats/vtk_writer.h"
+#include "getme/meshgen/layered_hex_block.h"
 #include "getme_wire/engine_mesh.h"
 #include "getme_wire/params.h"
 #include "json_test_parser.h"
@@ -253,6 +257,131 @@ TEST_F(RemoteCliTest, DetachWatchFetchWritesTheLocalResult) {
       RunGetme({"jobs", "fetch", job_id, fetched, "--input", kHybrid, "--server", target_});
   ASSERT_EQ(fetch.exit_status, 0) << fetch.err;
   EXPECT_TRUE(ReadFile(fetched) == ReadFile(local_out)) << "fetched file differs from local";
+}
+
+// Whether two JSON values are the same, numbers bit for bit; `path` names the first difference.
+bool SameJson(const JsonValue& a, const JsonValue& b, const std::string& path, std::string& diff) {
+  if (a.kind != b.kind || a.boolean != b.boolean || a.number != b.number || a.string != b.string ||
+      a.array.size() != b.array.size() || Keys(a) != Keys(b)) {
+    diff = path;
+    return false;
+  }
+  for (std::size_t i = 0; i < a.array.size(); ++i) {
+    if (!SameJson(a.array[i], b.array[i], absl::StrCat(path, "[", i, "]"), diff)) return false;
+  }
+  for (std::size_t i = 0; i < a.object.size(); ++i) {
+    const std::string member = absl::StrCat(path, ".", a.object[i].key);
+    if (!SameJson(a.object[i].value, b.object[i].value, member, diff)) return false;
+  }
+  return true;
+}
+
+// The text summary from its boundary section to the timings: what a slide and kept layers did.
+std::string BoundarySection(const std::string& summary) {
+  const std::size_t begin = summary.find("\nboundary ");
+  const std::size_t end = summary.find("\nseconds ");
+  if (begin == std::string::npos || end == std::string::npos || end < begin) return "";
+  return summary.substr(begin, end - begin);
+}
+
+// --boundary slide --keep-layers through the service (issue 15), on a hexahedral boundary-layer
+// block (the one getme-meshgen hex-layers makes): the same file as the local run, and the same
+// boundary, boundary_slide and layers in --json and the text summary; `jobs fetch` of a detached
+// job, which knows nothing of the parameters, reports them from the result alone.
+TEST_F(RemoteCliTest, SlidingBoundaryAndKeptLayersMatchLocal) {
+  const std::string input = TempPath("hex-layers.vtk");
+  absl::StatusOr<Mesh> block = meshgen::LayeredHexBlock(6, 6, 10, 0.01, 1.3, 0.3, 7);
+  ASSERT_TRUE(block.ok()) << block.status();
+  // Each interior column shifted sideways as a whole: an irregular wall grid for the slide to
+  // even out (node (i, j, k) is i + 7 j + 49 k).
+  for (int j = 1; j < 6; ++j) {
+    for (int i = 1; i < 6; ++i) {
+      for (int k = 0; k <= 10; ++k) {
+        block->x()[i + 7 * j + 49 * k] += 0.2 * std::sin(7.0 * i + 3.0 * j);
+        block->y()[i + 7 * j + 49 * k] += 0.2 * std::cos(5.0 * i + 11.0 * j);
+      }
+    }
+  }
+  ASSERT_TRUE(formats::WriteVtkFile(input, formats::GridFromMesh(*block, "hex layers")).ok());
+  const std::vector<std::string> options = {"--boundary", "slide", "--keep-layers", "--threads",
+                                            "1"};
+  const auto smooth = [&](const std::string& output, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"smooth", input, output};
+    args.insert(args.end(), options.begin(), options.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunGetme(args);
+  };
+  const std::string local_out = TempPath("local.vtk");
+  const std::string remote_out = TempPath("remote.vtk");
+  const RunResult local = smooth(local_out, {"--json"});
+  ASSERT_EQ(local.exit_status, 0) << local.err;
+  const RunResult remote = smooth(remote_out, {"--json", "--server", target_});
+  ASSERT_EQ(remote.exit_status, 0) << remote.err;
+  EXPECT_TRUE(ReadFile(local_out) == ReadFile(remote_out)) << "remote and local files differ";
+
+  const JsonValue local_result = JsonLines(local.out).back();
+  const JsonValue remote_result = JsonLines(remote.out).back();
+  EXPECT_EQ(Keys(remote_result), Keys(local_result));
+  EXPECT_EQ(remote_result.Find("boundary")->string, "slide");
+  const JsonValue* slide = remote_result.Find("boundary_slide");
+  ASSERT_NE(slide, nullptr) << remote.out;
+  EXPECT_GT(slide->Find("slid_nodes")->number, 0);
+  EXPECT_EQ(slide->Find("feature_curves")->number, 12);  // a box's edges
+  EXPECT_EQ(slide->Find("corners")->number, 8);
+  const JsonValue* layers = remote_result.Find("layers");
+  ASSERT_NE(layers, nullptr) << remote.out;
+  EXPECT_EQ(layers->Find("columns")->number, 36);
+  EXPECT_EQ(layers->Find("layers")->number, 10);
+  EXPECT_LE(layers->Find("max_height_change")->number, 0.01);
+  for (const char* key : {"boundary", "boundary_slide", "layers", "q_min", "q_mean", "phases"}) {
+    std::string diff;
+    const JsonValue* expected = local_result.Find(key);
+    ASSERT_NE(expected, nullptr) << key;
+    if (std::string(key) == "phases") {  // but their seconds
+      ASSERT_EQ(remote_result.Find(key)->array.size(), expected->array.size());
+      for (std::size_t i = 0; i < expected->array.size(); ++i) {
+        EXPECT_EQ(remote_result.Find(key)->array[i].Find("phase")->string,
+                  expected->array[i].Find("phase")->string);
+        EXPECT_EQ(remote_result.Find(key)->array[i].Find("iterations")->number,
+                  expected->array[i].Find("iterations")->number);
+      }
+      continue;
+    }
+    EXPECT_TRUE(SameJson(*remote_result.Find(key), *expected, key, diff)) << "differs at " << diff;
+  }
+  EXPECT_EQ(remote_result.Find("phases")->array.front().Find("phase")->string, "layers");
+
+  // The text summary says the same.
+  const RunResult local_text = smooth(TempPath("local-text.vtk"), {"--quiet"});
+  const RunResult remote_text =
+      smooth(TempPath("remote-text.vtk"), {"--quiet", "--server", target_});
+  ASSERT_EQ(local_text.exit_status, 0) << local_text.err;
+  ASSERT_EQ(remote_text.exit_status, 0) << remote_text.err;
+  const std::string section = BoundarySection(local_text.out);
+  EXPECT_TRUE(absl::StrContains(section, "boundary         slide: ")) << local_text.out;
+  EXPECT_TRUE(absl::StrContains(section, "layers           kept: 36 columns")) << local_text.out;
+  EXPECT_EQ(BoundarySection(remote_text.out), section) << remote_text.out;
+
+  // A detached job, watched and fetched.
+  std::vector<std::string> detach = {"smooth", input, "--server", target_, "--detach"};
+  detach.insert(detach.end(), options.begin(), options.end());
+  const RunResult detached = RunGetme(detach);
+  ASSERT_EQ(detached.exit_status, 0) << detached.err;
+  const std::string job_id = Lines(detached.out).at(0);
+  ASSERT_EQ(RunGetme({"jobs", "watch", job_id, "--server", target_}).exit_status, 0);
+  const std::string fetched = TempPath("fetched.vtk");
+  const RunResult fetch =
+      RunGetme({"jobs", "fetch", job_id, fetched, "--input", input, "--server", target_, "--json"});
+  ASSERT_EQ(fetch.exit_status, 0) << fetch.err;
+  EXPECT_TRUE(ReadFile(fetched) == ReadFile(local_out)) << "fetched file differs from local";
+  const JsonValue fetched_result = JsonLines(fetch.out).back();
+  EXPECT_EQ(fetched_result.Find("boundary")->string, "slide");
+  for (const char* key : {"boundary_slide", "layers"}) {
+    std::string diff;
+    ASSERT_NE(fetched_result.Find(key), nullptr) << fetch.out;
+    EXPECT_TRUE(SameJson(*fetched_result.Find(key), *local_result.Find(key), key, diff))
+        << "differs at " << diff;
+  }
 }
 
 }  // namespace

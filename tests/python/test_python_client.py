@@ -10,6 +10,7 @@ Usage: test_python_client.py --package-dir build/python --server-binary getme-se
 
 import argparse
 import json
+import math
 import os
 import re
 import subprocess
@@ -463,6 +464,137 @@ class Errors(unittest.TestCase):
         with self.assertRaises(getme.Error) as context:
             getme.smooth(mesh, SERVER.address, timeout=0.001)
         self.assert_error(context, grpc.StatusCode.DEADLINE_EXCEEDED)
+
+
+def layer_block():
+    """A hexahedral boundary-layer block on the wall z = 0, 6 x 6 columns of 10 layers (1 % thick
+    at the wall, growing 1.3 x), each interior column shifted sideways as a whole so that a
+    sliding wall has an irregular grid to even out; as (points, cells), hexahedra in VTK order."""
+    cells, layers = 6, 10
+    z = np.concatenate([[0.0], np.cumsum(0.01 * 1.3 ** np.arange(layers))])
+    points = []
+    for k in range(layers + 1):
+        for j in range(cells + 1):
+            for i in range(cells + 1):
+                x, y = float(i), float(j)
+                if 0 < i < cells and 0 < j < cells:
+                    x += 0.2 * math.sin(7.0 * i + 3.0 * j)
+                    y += 0.2 * math.cos(5.0 * i + 11.0 * j)
+                points.append((x, y, z[k]))
+
+    def node(i, j, k):
+        return i + (cells + 1) * (j + (cells + 1) * k)
+
+    hexahedra = [[node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k), node(i, j + 1, k),
+                  node(i, j, k + 1), node(i + 1, j, k + 1), node(i + 1, j + 1, k + 1),
+                  node(i, j + 1, k + 1)]
+                 for k in range(layers) for j in range(cells) for i in range(cells)]
+    return np.array(points), {"hexahedron": np.array(hexahedra, dtype=np.int64)}
+
+
+class Boundary(unittest.TestCase):
+    """boundary=, feature_angle= and keep_layers= (issue 15), against the CLI's local run."""
+
+    def cli_reference(self, points, cells, *options):
+        with tempfile.TemporaryDirectory(dir=ARGS.work_dir) as directory:
+            path = os.path.join(directory, "layers.vtk")
+            meshio.write(path, meshio.Mesh(points, list(cells.items())), file_format="vtk")
+            return cli_smooth(path, *options)
+
+    def test_slide_with_kept_layers_matches_the_cli_with_its_reports(self):
+        points, cells = layer_block()
+        (smoothed, _), report = getme.smooth((points, cells), SERVER.address, boundary="slide",
+                                             keep_layers=True)
+        reference, cli = self.cli_reference(points, cells, "--boundary", "slide", "--keep-layers")
+        self.assertTrue(np.array_equal(smoothed, reference.points))
+        self.assertEqual(report.boundary, "slide")
+        self.assertEqual(cli["boundary"], "slide")
+        slide = report.boundary_slide
+        self.assertIsInstance(slide, getme.BoundarySlideReport)
+        for key, value in cli["boundary_slide"].items():
+            self.assertEqual(getattr(slide, key), value, key)
+        self.assertGreater(slide.slid_nodes, 0)
+        self.assertEqual((slide.feature_curves, slide.corners), (12, 8))  # a box
+        layers = report.layers
+        self.assertIsInstance(layers, getme.LayerReport)
+        self.assertEqual(layers.columns, 36)
+        for key in ("columns", "column_elements", "layer_nodes", "layers", "conflicting_nodes",
+                    "ends", "max_height_change"):
+            self.assertEqual(getattr(layers, key), cli["layers"][key], key)
+        for state in ("before", "after"):
+            for key, value in cli["layers"][state].items():
+                self.assertEqual(getattr(getattr(layers, state), key), value, f"{state}.{key}")
+        self.assertLessEqual(layers.max_height_change, 0.01)
+        self.assertEqual(report.phases[0].phase, "layers")
+        self.assertEqual(report.iterations["layers"],
+                         sum(p.iterations for p in report.phases if p.phase == "layers"))
+        self.assertGreaterEqual(report.iterations["layers"], 1)
+
+    def test_a_held_or_free_boundary_reports_no_slide(self):
+        points, cells = layer_block()
+        _, report = getme.smooth((points, cells), SERVER.address, max_iterations=3)
+        self.assertEqual(report.boundary, "fixed")
+        self.assertIsNone(report.boundary_slide)
+        self.assertIsNone(report.layers)
+        self.assertEqual(report.iterations["layers"], 0)
+        # free_boundary=True stays the spelling of boundary="free".
+        for params in ({"free_boundary": True}, {"boundary": "free"}, {"boundary": "FREE"}):
+            (smoothed, _), report = getme.smooth((points, cells), SERVER.address,
+                                                 max_iterations=3, **params)
+            self.assertEqual(report.boundary, "free", params)
+            self.assertIsNone(report.layers, params)
+
+    def test_feature_angle_reaches_the_server(self):
+        points, cells = layer_block()
+        # 91 degrees: the box's 90-degree edges are no features any more, and with one surface
+        # group there are no group borders either: no feature edges, no corners.
+        _, report = getme.smooth((points, cells), SERVER.address, boundary="slide",
+                                 feature_angle=91, max_iterations=3)
+        self.assertEqual((report.boundary_slide.feature_edges, report.boundary_slide.corners),
+                         (0, 0))
+        _, cli = self.cli_reference(points, cells, "--boundary", "slide", "--feature-angle", "91",
+                                    "--max-iterations", "3")
+        self.assertEqual(cli["boundary_slide"]["corners"], 0)
+
+    def test_bad_values_name_the_keyword(self):
+        points, cells = layer_block()
+        with self.assertRaises(ValueError) as context:
+            getme.smooth((points, cells), unused_address(), boundary="sideways")
+        self.assertIn("boundary", str(context.exception))
+        self.assertIn("fixed, slide, free", str(context.exception))
+        with self.assertRaises(TypeError) as context:
+            getme.smooth((points, cells), unused_address(), boundary=True)
+        self.assertIn("boundary", str(context.exception))
+        with self.assertRaises(TypeError) as context:
+            getme.smooth((points, cells), unused_address(), feature_angle=30,
+                         feature_angle_degrees=40)
+        self.assertIn("feature_angle and feature_angle_degrees", str(context.exception))
+        with self.assertRaises(TypeError) as context:
+            getme.smooth((points, cells), unused_address(), keep_layers="yes")
+        self.assertIn("keep_layers", str(context.exception))
+        # Values and combinations the server refuses, naming the fields.
+        refused = (
+            ({"boundary": "slide", "feature_angle": 200}, ["feature_angle_degrees = 200"]),
+            ({"feature_angle": 30}, ["feature_angle_degrees", "BOUNDARY_SLIDE"]),
+            ({"boundary": "slide", "free_boundary": True},
+             ["free_boundary = true", "boundary = BOUNDARY_SLIDE"]),
+            ({"boundary": "free", "keep_layers": True},
+             ["keep_layers = true", "boundary = BOUNDARY_FREE"]),
+            ({"free_boundary": True, "keep_layers": True},
+             ["keep_layers = true", "free_boundary = true"]),
+        )
+        for params, fragments in refused:
+            with self.assertRaises(getme.Error, msg=str(params)) as context:
+                getme.smooth((points, cells), SERVER.address, **params)
+            self.assertEqual(context.exception.code, grpc.StatusCode.INVALID_ARGUMENT, params)
+            for fragment in fragments:
+                self.assertIn(fragment, context.exception.details, params)
+
+    def test_parameter_names_list_the_keywords(self):
+        names = getme.parameter_names()
+        for name in ("boundary", "feature_angle", "feature_angle_degrees", "keep_layers",
+                     "free_boundary"):
+            self.assertIn(name, names)
 
 
 def make_certificates(directory):

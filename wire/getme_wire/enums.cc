@@ -55,6 +55,24 @@ v1::Phase ToWirePhase(Phase phase) { return ToWire(kPhases, phase); }
 
 std::optional<Phase> FromWirePhase(int phase) { return FromWire(kPhases, phase); }
 
+v1::Boundary ToWireBoundary(const SmoothingParams& params) {
+  if (!params.fix_boundary) return v1::BOUNDARY_FREE;
+  return params.slide_boundary ? v1::BOUNDARY_SLIDE : v1::BOUNDARY_FIXED;
+}
+
+const char* BoundaryName(v1::Boundary boundary) {
+  switch (boundary) {
+    case v1::BOUNDARY_FIXED:
+      return "fixed";
+    case v1::BOUNDARY_SLIDE:
+      return "slide";
+    case v1::BOUNDARY_FREE:
+      return "free";
+    default:
+      return "unspecified";
+  }
+}
+
 Method MethodOrGetme(v1::Method method) { return FromWireMethod(method).value_or(Method::kGetme); }
 
 Phase PhaseOrSimultaneous(v1::Phase phase) {

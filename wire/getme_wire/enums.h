@@ -18,6 +18,14 @@ std::optional<Method> FromWireMethod(int method);
 v1::Phase ToWirePhase(Phase phase);
 std::optional<Phase> FromWirePhase(int phase);  // nullopt for unspecified or unknown values
 
+// The engine has no boundary enum: fix_boundary and slide_boundary say it (smoothing_params.h).
+// BOUNDARY_FIXED, BOUNDARY_SLIDE or BOUNDARY_FREE; never BOUNDARY_UNSPECIFIED.
+v1::Boundary ToWireBoundary(const SmoothingParams& params);
+// "fixed", "slide" or "free", as the CLI's --boundary, the Python keyword and the dashboard name
+// them; "unspecified" for BOUNDARY_UNSPECIFIED (a server that predates the field) and values
+// this build does not know.
+const char* BoundaryName(v1::Boundary boundary);
+
 // For display, where any value must read as something: values a newer peer may send fall back to
 // GETMe / the simultaneous phase.
 Method MethodOrGetme(v1::Method method);

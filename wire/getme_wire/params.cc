@@ -14,6 +14,50 @@ absl::StatusOr<Method> ToEngineMethod(int method) {
       absl::StrCat("parameters.method = ", method, " is not a known getme.v1.Method"));
 }
 
+// boundary, its older spelling free_boundary, and what only some boundaries allow: checked here
+// rather than by SmoothingParams::Validate, whose fix_boundary and slide_boundary are no wire
+// fields, so that the message names the fields the caller set.
+absl::Status ApplyBoundary(const v1::SmoothingParameters& wire, SmoothingParams& params) {
+  const int boundary = wire.boundary();
+  if (!v1::Boundary_IsValid(boundary)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("parameters.boundary = ", boundary, " is not a known getme.v1.Boundary"));
+  }
+  if (wire.has_free_boundary() && boundary != v1::BOUNDARY_UNSPECIFIED &&
+      wire.free_boundary() != (boundary == v1::BOUNDARY_FREE)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("parameters.free_boundary = ", wire.free_boundary() ? "true" : "false",
+                     " contradicts parameters.boundary = ", v1::Boundary_Name(boundary),
+                     ": free_boundary is the older spelling of BOUNDARY_FREE; set one of the two"));
+  }
+  v1::Boundary mode = static_cast<v1::Boundary>(boundary);
+  if (mode == v1::BOUNDARY_UNSPECIFIED) {
+    mode = wire.free_boundary() ? v1::BOUNDARY_FREE : v1::BOUNDARY_FIXED;
+  }
+  params.fix_boundary = mode != v1::BOUNDARY_FREE;
+  params.slide_boundary = mode == v1::BOUNDARY_SLIDE;
+  if (wire.has_feature_angle_degrees()) {
+    // As the CLI refuses --feature-angle without --boundary slide: a caller who sets it expects
+    // a sliding boundary.
+    if (mode != v1::BOUNDARY_SLIDE) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("parameters.feature_angle_degrees only shapes a sliding boundary: it needs "
+                       "parameters.boundary = BOUNDARY_SLIDE, not ",
+                       v1::Boundary_Name(mode)));
+    }
+    params.feature_angle_degrees = wire.feature_angle_degrees();
+  }
+  if (wire.has_keep_layers()) params.keep_layers = wire.keep_layers();
+  if (params.keep_layers && mode == v1::BOUNDARY_FREE) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("parameters.keep_layers = true needs the boundary fixed or sliding, but ",
+                     boundary == v1::BOUNDARY_FREE ? "parameters.boundary = BOUNDARY_FREE"
+                                                   : "parameters.free_boundary = true",
+                     " moves the walls the layer heights are measured from"));
+  }
+  return absl::OkStatus();
+}
+
 void ApplyPerType(const v1::PerType& wire, PerType& values) {
   if (wire.has_tetrahedron()) values[TypeIndex(ElementType::kTetrahedron)] = wire.tetrahedron();
   if (wire.has_hexahedron()) values[TypeIndex(ElementType::kHexahedron)] = wire.hexahedron();
@@ -103,7 +147,7 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
   if (wire.has_untangle_max_iterations()) {
     params.untangle_max_iterations = wire.untangle_max_iterations();
   }
-  if (wire.has_free_boundary()) params.fix_boundary = !wire.free_boundary();
+  if (absl::Status boundary = ApplyBoundary(wire, params); !boundary.ok()) return boundary;
   if (wire.has_untangle_free_boundary()) {
     params.untangle_free_boundary = wire.untangle_free_boundary();
   }
@@ -203,6 +247,11 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.untangle, defaults.untangle, [&](bool v) { wire.set_untangle(v); });
   SetIfChanged(params.untangle_max_iterations, defaults.untangle_max_iterations, [&](std::int64_t v) { wire.set_untangle_max_iterations(v); });
   SetIfChanged(params.fix_boundary, defaults.fix_boundary, [&](bool v) { wire.set_free_boundary(!v); });
+  // A sliding boundary goes as the enum; a free one keeps its older spelling, which servers that
+  // predate the enum understand too.
+  SetIfChanged(params.slide_boundary, defaults.slide_boundary, [&](bool) { wire.set_boundary(v1::BOUNDARY_SLIDE); });
+  SetIfChanged(params.feature_angle_degrees, defaults.feature_angle_degrees, [&](double v) { wire.set_feature_angle_degrees(v); });
+  SetIfChanged(params.keep_layers, defaults.keep_layers, [&](bool v) { wire.set_keep_layers(v); });
   SetIfChanged(params.threads, defaults.threads, [&](int v) { wire.set_threads(v); });
   SetIfChanged(params.untangle_free_boundary, defaults.untangle_free_boundary, [&](bool v) { wire.set_untangle_free_boundary(v); });
   SetIfChanged(params.polish, defaults.polish, [&](bool v) { wire.set_polish(v); });

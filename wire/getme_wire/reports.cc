@@ -84,6 +84,14 @@ v1::SmoothResult ToWireSmoothResult(const SmoothingResult& result, const MeshQua
   summary.set_iterations_sequential(result.iterations_sequential);
   summary.set_iterations_laplace(result.iterations_laplace);
   summary.set_iterations_polish(result.iterations_polish);
+  summary.set_iterations_layers(result.iterations_layers);
+  if (result.boundary_slide) {
+    v1::BoundarySlideReport& slide = *summary.mutable_boundary_slide();
+    slide.set_sliding_nodes(result.boundary_slide->sliding_nodes);
+    slide.set_slid_nodes(result.boundary_slide->slid_nodes);
+    slide.set_max_distance(result.boundary_slide->max_distance);
+    slide.set_layer_nodes(result.boundary_slide->layer_nodes);
+  }
   summary.set_seconds(result.seconds);
   summary.set_threads(result.threads);
   return summary;
@@ -108,6 +116,12 @@ SmoothingResult FromWireResult(const v1::SmoothResult& result) {
   converted.iterations_sequential = result.iterations_sequential();
   converted.iterations_laplace = result.iterations_laplace();
   converted.iterations_polish = result.iterations_polish();
+  converted.iterations_layers = result.iterations_layers();
+  if (result.has_boundary_slide()) {
+    const v1::BoundarySlideReport& slide = result.boundary_slide();
+    converted.boundary_slide = BoundarySlideSummary{slide.sliding_nodes(), slide.slid_nodes(),
+                                                    slide.max_distance(), slide.layer_nodes()};
+  }
   converted.seconds = result.seconds();
   converted.threads = result.threads();
   return converted;

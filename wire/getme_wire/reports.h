@@ -18,7 +18,8 @@ v1::PhaseSummary ToWirePhaseSummary(const PhaseSummary& summary);
 
 // The summary of a finished run: `before` and `after` are the qualities to report (the engine's,
 // or ones evaluated with the caller's histogram bins). Job id, nodes and result options are the
-// job's to set.
+// job's to set, and so are the boundary the job ran with and what the input's surface reported
+// (boundary_reports.h).
 v1::SmoothResult ToWireSmoothResult(const SmoothingResult& result, const MeshQuality& before,
                                     const MeshQuality& after, const WireMeshIds& ids);
 // As the engine struct the CLI's reports and JSON print.

@@ -22,11 +22,13 @@ never imports it: a meshio.Mesh is recognised by its attributes).
 from getme._client import DEFAULT_SERVER, quality, smooth
 from getme._errors import Error
 from getme._params import parameter_names
-from getme._report import PhaseSummary, ProgressEvent, QualityReport, SmoothReport, TypeQuality
+from getme._report import (BoundarySlideReport, LayerReport, LayerState, PhaseSummary,
+                           ProgressEvent, QualityReport, SmoothReport, TypeQuality)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "smooth", "quality", "Error", "ProgressEvent", "SmoothReport", "QualityReport",
-    "TypeQuality", "PhaseSummary", "parameter_names", "DEFAULT_SERVER",
+    "TypeQuality", "PhaseSummary", "BoundarySlideReport", "LayerReport", "LayerState",
+    "parameter_names", "DEFAULT_SERVER",
 ]

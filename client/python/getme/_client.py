@@ -104,14 +104,24 @@ def smooth(mesh, server=DEFAULT_SERVER, *,
       None waits as long as it takes.
     fixed: nodes that must not move, as a boolean mask over the points or a list of node
       indices; nodes with a nonzero point_data "fixed" value are fixed as well. Boundary nodes
-      are fixed unless free_boundary=True.
+      are fixed unless boundary="slide" or boundary="free" says otherwise.
     bins: histogram bins of the reports.
     chunk_bytes: upload message size (about 1 MB by default).
     params: getme.v1.SmoothingParameters fields by name (proto/getme/v1/params.proto), e.g.
       method="getme" (or "simultaneous", "sequential", "warpage", "smart_laplace", "laplace"),
-      threads=2, untangle=False, free_boundary=True, sequential_sigma={"tetra": 0.8};
+      threads=2, untangle=False, sequential_sigma={"tetra": 0.8};
       max_iterations=N caps every phase, as the CLI's --max-iterations. Unset fields take the
       paper's defaults. An unknown name is a TypeError naming it.
+      The boundary, as the CLI's --boundary, --feature-angle and --keep-layers
+      (docs/boundary-service.md): boundary="fixed" (the default: boundary nodes stay), "slide"
+      (they move along the input's own surface, feature-edge nodes along their edge, corners
+      stay) or "free" (they move like the others; free_boundary=True is the older spelling);
+      feature_angle=DEG (with boundary="slide": faces meeting at more than DEG degrees have a
+      feature edge between them, default 45; the proto's feature_angle_degrees); keep_layers=True
+      (boundary-layer columns keep every layer's height; not with boundary="free"). An unknown
+      boundary name is a ValueError naming the keyword; a value the server refuses (an angle
+      outside [0, 180], free_boundary=True with boundary="slide", ...) an INVALID_ARGUMENT
+      getme.Error naming the fields. The report's boundary_slide and layers say what they did.
 
     Returns the smoothed mesh as the same kind as the input (a meshio.Mesh, a deep copy with the
     new points, for a meshio.Mesh; a tuple or dict sharing the input's cells for a tuple or

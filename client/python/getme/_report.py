@@ -2,15 +2,16 @@
 
 Element types are named as meshio names them ("tetra", "hexahedron", "wedge", "pyramid"), phases
 by the lower-case name of getme.v1.Phase without its prefix ("untangle", "simultaneous",
-"sequential", "warpage", "smart_laplace", "laplace", "polish"); both mappings are _wire's.
+"sequential", "warpage", "smart_laplace", "laplace", "polish", "layers"), boundaries likewise
+("fixed", "slide", "free"); these mappings are _wire's.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Dict, List
+from typing import Dict, List, Optional
 
-from getme._wire import ELEMENT_GROUPS, ITERATION_COUNTERS, phase_name
+from getme._wire import ELEMENT_GROUPS, ITERATION_COUNTERS, LAYER_ENDS, boundary_name, phase_name
 
 
 @dataclass(frozen=True)
@@ -72,15 +73,101 @@ class PhaseSummary:
 
 
 @dataclass(frozen=True)
+class BoundarySlideReport:
+    """What a sliding boundary (boundary="slide") or kept layers (keep_layers=True) did
+    (getme.v1.BoundarySlideReport).
+
+    sliding_nodes: boundary nodes that could slide (not corners, not fixed); slid_nodes: those
+    that moved; max_distance: the largest distance of one from the input's surface; layer_nodes:
+    nodes above the walls in kept boundary-layer columns. feature_edges, feature_curves and
+    corners describe the input's surface as the slide saw it (0 with keep_layers alone), with
+    surface_groups (its groups, plus group 0) and interior_grouped_faces (tagged faces not on the
+    boundary, left out).
+    """
+    sliding_nodes: int
+    slid_nodes: int
+    max_distance: float
+    layer_nodes: int
+    feature_edges: int
+    feature_curves: int
+    corners: int
+    surface_groups: int = 0
+    interior_grouped_faces: int = 0
+
+    @staticmethod
+    def from_proto(report) -> "BoundarySlideReport":
+        return BoundarySlideReport(sliding_nodes=report.sliding_nodes,
+                                   slid_nodes=report.slid_nodes, max_distance=report.max_distance,
+                                   layer_nodes=report.layer_nodes,
+                                   feature_edges=report.feature_edges,
+                                   feature_curves=report.feature_curves, corners=report.corners,
+                                   surface_groups=report.surface_groups,
+                                   interior_grouped_faces=report.interior_grouped_faces)
+
+
+@dataclass(frozen=True)
+class LayerState:
+    """The kept layers at one moment (getme.v1.LayerState): first-layer height over the columns
+    (min, mean, max), the mean lean of the column edges from the wall normal in degrees, and the
+    quality of the columns' elements."""
+    first_min: float
+    first_mean: float
+    first_max: float
+    mean_lean_degrees: float
+    q_min: float
+    q_mean: float
+
+    @staticmethod
+    def from_proto(state) -> "LayerState":
+        return LayerState(first_min=state.first_min, first_mean=state.first_mean,
+                          first_max=state.first_max, mean_lean_degrees=state.mean_lean_degrees,
+                          q_min=state.q_min, q_mean=state.q_mean)
+
+
+@dataclass(frozen=True)
+class LayerReport:
+    """The boundary-layer columns keep_layers=True found and kept (getme.v1.LayerReport).
+
+    columns: wall faces a column grows from; column_elements; layer_nodes: nodes above the walls,
+    moved only with their column; layers; conflicting_nodes: where columns collide (left to the
+    ordinary phases). ends: why the columns stop, by "tetrahedron", "pyramid", "prism_side",
+    "isotropic" (an element as thick as wide), "other_column", "boundary". before, after:
+    LayerState. max_height_change: the largest |after / before - 1| of one layer at one node.
+    """
+    columns: int
+    column_elements: int
+    layer_nodes: int
+    layers: int
+    conflicting_nodes: int
+    ends: Dict[str, int]
+    before: LayerState
+    after: LayerState
+    max_height_change: float
+
+    @staticmethod
+    def from_proto(report) -> "LayerReport":
+        return LayerReport(columns=report.columns, column_elements=report.column_elements,
+                           layer_nodes=report.layer_nodes, layers=report.layers,
+                           conflicting_nodes=report.conflicting_nodes,
+                           ends={end: getattr(report, f"ends_{end}") for end in LAYER_ENDS},
+                           before=LayerState.from_proto(report.before),
+                           after=LayerState.from_proto(report.after),
+                           max_height_change=report.max_height_change)
+
+
+@dataclass(frozen=True)
 class SmoothReport:
     """What a smoothing job did (getme.v1.SmoothResult).
 
     before, after: QualityReport of the input and of the smoothed mesh; q_min, q_mean,
     invalid_elements and histogram are the after values. phases: PhaseSummary per phase run, in
     order. iterations: per phase name ("untangle", "simultaneous", "sequential", "laplace",
-    "polish": sweeps).
+    "polish": sweeps, "layers": passes over the kept columns).
     seconds: smoothing time on the server, without queueing and transfer. threads: the engine
     threads the job used.
+    boundary: how the boundary moved, "fixed", "slide" or "free" ("unspecified" from a server
+    that predates the field). boundary_slide: a BoundarySlideReport with boundary="slide" or
+    keep_layers=True, else None. layers: a LayerReport with keep_layers=True, else None.
     """
     job_id: str
     before: QualityReport
@@ -89,6 +176,9 @@ class SmoothReport:
     iterations: Dict[str, int]
     seconds: float
     threads: int
+    boundary: str = "fixed"
+    boundary_slide: Optional[BoundarySlideReport] = None
+    layers: Optional[LayerReport] = None
 
     @property
     def q_min(self) -> float:
@@ -118,7 +208,11 @@ class SmoothReport:
         return SmoothReport(job_id=result.job_id, before=QualityReport.from_proto(result.before),
                             after=QualityReport.from_proto(result.after), phases=phases,
                             iterations=iterations, seconds=result.seconds,
-                            threads=result.threads)
+                            threads=result.threads, boundary=boundary_name(result.boundary),
+                            boundary_slide=(BoundarySlideReport.from_proto(result.boundary_slide)
+                                            if result.HasField("boundary_slide") else None),
+                            layers=(LayerReport.from_proto(result.layers)
+                                    if result.HasField("layers") else None))
 
 
 @dataclass(frozen=True)
@@ -153,4 +247,5 @@ class ProgressEvent:
                              sequence=event.sequence, final=event.final)
 
 
-__all__ = ["TypeQuality", "QualityReport", "PhaseSummary", "SmoothReport", "ProgressEvent"]
+__all__ = ["TypeQuality", "QualityReport", "PhaseSummary", "BoundarySlideReport", "LayerState",
+           "LayerReport", "SmoothReport", "ProgressEvent"]

@@ -81,7 +81,7 @@ class IterationCounter(NamedTuple):
     """A phase whose iterations the result counts and the parameters cap."""
     phase: str  # as phase_name() names it
     result_field: str  # getme.v1.SmoothResult's count
-    max_iterations_field: str  # getme.v1.SmoothingParameters' cap
+    max_iterations_field: Optional[str]  # getme.v1.SmoothingParameters' cap; None: none
 
 
 ITERATION_COUNTERS = (
@@ -90,10 +90,21 @@ ITERATION_COUNTERS = (
     IterationCounter("sequential", "iterations_sequential", "sequential_max_iterations"),
     IterationCounter("laplace", "iterations_laplace", "laplace_max_iterations"),
     IterationCounter("polish", "iterations_polish", "polish_max_sweeps"),
+    # Passes over the kept boundary-layer columns (keep_layers): a few, with no cap of their own.
+    IterationCounter("layers", "iterations_layers", None),
 )
+
+# Keywords of smooth() that spell a getme.v1.SmoothingParameters field otherwise: the CLI's
+# --feature-angle.
+PARAMETER_ALIASES = {"feature_angle": "feature_angle_degrees"}
+
+# Why kept boundary-layer columns stop (getme.v1.LayerReport's ends_* fields), named as the CLI's
+# --json names them.
+LAYER_ENDS = ("tetrahedron", "pyramid", "prism_side", "isotropic", "other_column", "boundary")
 
 _PHASE_PREFIX = "PHASE_"
 _METHOD_PREFIX = "METHOD_"
+_BOUNDARY_PREFIX = "BOUNDARY_"
 
 
 def phase_name(phase: int) -> str:
@@ -128,9 +139,37 @@ def is_method(value: int) -> bool:
     return value in params_pb2.Method.values()
 
 
+def boundary_value(name: str) -> Optional[int]:
+    """The getme.v1.Boundary of "fixed", "slide", "free" or "BOUNDARY_SLIDE", ... (any case);
+    None for an unknown name."""
+    key = name.strip().upper()
+    if not key.startswith(_BOUNDARY_PREFIX):
+        key = _BOUNDARY_PREFIX + key
+    if key in params_pb2.Boundary.keys() and key != _BOUNDARY_PREFIX + "UNSPECIFIED":
+        return params_pb2.Boundary.Value(key)
+    return None
+
+
+def boundary_names() -> List[str]:
+    """"fixed", "slide", "free": the names boundary_value() knows, in the proto's order."""
+    return [key[len(_BOUNDARY_PREFIX):].lower() for key in params_pb2.Boundary.keys()
+            if key != _BOUNDARY_PREFIX + "UNSPECIFIED"]
+
+
+def boundary_name(value: int) -> str:
+    """"slide" for BOUNDARY_SLIDE; "unspecified" for 0 (a server that predates the field);
+    "boundary_N" for unknown N."""
+    try:
+        name = params_pb2.Boundary.Name(value)
+    except ValueError:
+        return f"boundary_{value}"
+    return name[len(_BOUNDARY_PREFIX):].lower()
+
+
 __all__ = [
     "PRISM_PERMUTATION", "ElementGroup", "ELEMENT_GROUPS", "GROUP_BY_MESHIO", "PASSTHROUGH_CELLS",
     "NODE_INDEX_MAX", "PER_TYPE_KEYS", "ChunkField", "CHUNK_FIELDS", "DEFAULT_CHUNK_BYTES",
-    "MIN_CHUNK_BYTES", "IterationCounter", "ITERATION_COUNTERS", "phase_name", "method_value",
-    "method_names", "is_method",
+    "MIN_CHUNK_BYTES", "IterationCounter", "ITERATION_COUNTERS", "PARAMETER_ALIASES", "LAYER_ENDS",
+    "phase_name", "method_value", "method_names", "is_method", "boundary_value", "boundary_names",
+    "boundary_name",
 ]
