@@ -217,7 +217,7 @@ TEST(BoundaryReports, SlideAndLayerReportsRoundTrip) {
   v1::SmoothResult wire = ToWireSmoothResult(engine, {}, {}, WireMeshIds{});
   wire.set_boundary(v1::BOUNDARY_SLIDE);
   SurfaceReports reports;
-  reports.boundary_surface = surface::BoundarySurfaceCounts{48, 12, 8};
+  reports.boundary_surface = surface::BoundarySurfaceCounts{48, 12, 8, 3, 2};
   reports.layers = SampleLayerReport();
   AddSurfaceReports(reports, wire);
   EXPECT_EQ(wire.iterations_layers(), 4);
@@ -240,6 +240,8 @@ TEST(BoundaryReports, SlideAndLayerReportsRoundTrip) {
   EXPECT_EQ(back.boundary_surface->feature_edges, 48);
   EXPECT_EQ(back.boundary_surface->feature_curves, 12);
   EXPECT_EQ(back.boundary_surface->corners, 8);
+  EXPECT_EQ(back.boundary_surface->surface_groups, 3);
+  EXPECT_EQ(back.boundary_surface->interior_grouped_faces, 2);
   ASSERT_TRUE(back.layers.has_value());
   const surface::LayerReport& layers = *back.layers;
   const surface::LayerReport expected = SampleLayerReport();
