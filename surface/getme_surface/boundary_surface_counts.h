@@ -14,7 +14,7 @@ namespace getme::surface {
 struct BoundarySurfaceCounts {
   std::int64_t feature_edges = 0;
   std::int64_t feature_curves = 0;
-  std::int64_t corners = 0;  // nodes on other than two feature edges: they stay
+  std::int64_t corners = 0;                 // nodes on other than two feature edges: they stay
   std::int64_t surface_groups = 0;          // the input's tagged groups, plus group 0
   std::int64_t interior_grouped_faces = 0;  // tagged faces not on the boundary (interfaces)
 };
