@@ -77,19 +77,6 @@ LocalSlideRun SmoothLocallyWithSlide(const v1::Mesh& wire, const SmoothingParams
   return run;
 }
 
-void ExpectBitIdenticalCoordinates(const Mesh& local, const v1::Mesh& remote) {
-  ASSERT_EQ(remote.coordinates_size(), 3 * local.node_count());
-  for (std::int64_t n = 0; n < local.node_count(); ++n) {
-    const double expected[3] = {local.x()[n], local.y()[n], local.z()[n]};
-    for (int axis = 0; axis < 3; ++axis) {
-      const double actual = remote.coordinates(static_cast<int>(3 * n + axis));
-      ASSERT_EQ(std::memcmp(&expected[axis], &actual, sizeof(double)), 0)
-          << "node " << n << " axis " << axis << ": local " << expected[axis] << " remote "
-          << actual;
-    }
-  }
-}
-
 void ExpectSameState(const v1::LayerState& remote, const surface::LayerState& local) {
   EXPECT_EQ(remote.first_min(), local.first_min);
   EXPECT_EQ(remote.first_mean(), local.first_mean);

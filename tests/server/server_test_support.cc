@@ -1,7 +1,10 @@
 #include "server_test_support.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <thread>
 
 #include "absl/time/clock.h"
@@ -267,6 +270,19 @@ v1::SmoothingParameters LongRunningParameters() {
   parameters.set_sequential_improvement_tolerance(0.0);
   parameters.set_sequential_cycle(200);
   return parameters;
+}
+
+void ExpectBitIdenticalCoordinates(const Mesh& local, const v1::Mesh& remote) {
+  ASSERT_EQ(remote.coordinates_size(), 3 * local.node_count());
+  for (std::int64_t n = 0; n < local.node_count(); ++n) {
+    const double expected[3] = {local.x()[n], local.y()[n], local.z()[n]};
+    for (int axis = 0; axis < 3; ++axis) {
+      const double actual = remote.coordinates(static_cast<int>(3 * n + axis));
+      ASSERT_EQ(std::memcmp(&expected[axis], &actual, sizeof(double)), 0)
+          << "node " << n << " axis " << axis << ": local " << expected[axis] << " remote "
+          << actual;
+    }
+  }
 }
 
 }  // namespace getme::server::testing

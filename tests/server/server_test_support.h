@@ -28,6 +28,8 @@ TestServer StartTestServer(const ServerOptions& options = TestOptions());
 v1::Mesh ToWire(const Mesh& mesh);
 // Wire → engine mesh in the wire's element numbering, for local reference runs.
 Mesh FromWire(const v1::Mesh& wire);
+// Fails the test unless `remote` holds exactly `local`'s coordinates, bit for bit.
+void ExpectBitIdenticalCoordinates(const Mesh& local, const v1::Mesh& remote);
 
 // Splits a mesh into chunks of about `bytes` each (one repeated field slice per chunk).
 std::vector<v1::MeshChunk> SplitIntoChunks(const v1::Mesh& mesh, std::size_t bytes = 1 << 20);

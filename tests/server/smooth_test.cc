@@ -26,19 +26,6 @@ LocalRun SmoothLocally(const v1::Mesh& wire, SmoothingParams params) {
   return run;
 }
 
-void ExpectBitIdenticalCoordinates(const Mesh& local, const v1::Mesh& remote) {
-  ASSERT_EQ(remote.coordinates_size(), 3 * local.node_count());
-  for (std::int64_t n = 0; n < local.node_count(); ++n) {
-    const double expected[3] = {local.x()[n], local.y()[n], local.z()[n]};
-    for (int axis = 0; axis < 3; ++axis) {
-      const double actual = remote.coordinates(static_cast<int>(3 * n + axis));
-      ASSERT_EQ(std::memcmp(&expected[axis], &actual, sizeof(double)), 0)
-          << "node " << n << " axis " << axis << ": local " << expected[axis] << " remote "
-          << actual;
-    }
-  }
-}
-
 TEST(SmoothTest, RemoteResultIsBitIdenticalToTheLocalEngine) {
   TestServer test = StartTestServer();
   const v1::Mesh wire = ToWire(SmallHybridMesh());
