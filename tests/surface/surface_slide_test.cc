@@ -9,9 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
+#include "getme/meshgen/hybrid_block.h"
 #include "getme/smoothing/smoother.h"
 #include "getme/smoothing/smoothing_context.h"
 #include "getme/smoothing/worst_cluster.h"
@@ -194,6 +197,82 @@ TEST(SurfaceSlideTest, TheWorstClusterStageMovesSlidingNodesAlongTheirFaces) {
     moved += out[0] != in[0] || out[1] != in[1] || out[2] != in[2];
   }
   EXPECT_GT(moved, 0);
+}
+
+}  // namespace
+}  // namespace getme::surface
+
+namespace getme::surface {
+namespace {
+
+// The distance in the plane from (x, y) to the boundary of the regular `sides`-gon of radius 1
+// around the origin (PolygonPrism's section), computed edge by edge.
+double DistanceToPolygon(double x, double y, int sides) {
+  double best = HUGE_VAL;
+  for (int s = 0; s < sides; ++s) {
+    const double a0 = 2.0 * M_PI * s / sides;
+    const double a1 = 2.0 * M_PI * (s + 1) / sides;
+    const double ax = std::cos(a0), ay = std::sin(a0);
+    const double ex = std::cos(a1) - ax, ey = std::sin(a1) - ay;
+    const double t = std::clamp(((x - ax) * ex + (y - ay) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+    best = std::min(best, std::hypot(x - ax - t * ex, y - ay - t * ey));
+  }
+  return best;
+}
+
+TEST(SurfaceSlideTest, SlidingNeverLeavesTheSurfaceOfRandomBoxesAndCylinders) {
+  // A property over random meshes: whatever the smoother does, every boundary node of a box
+  // (meshgen's hybrid block, all four element types) stays on its face, and every node of a
+  // faceted cylinder whose side nodes were moved up or down stays on the side facets or its cap;
+  // both checked from the coordinates alone.
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    absl::StatusOr<Mesh> box = meshgen::HybridBlock(4, 4, 4, 0.3, seed);
+    ASSERT_TRUE(box.ok());
+    const Mesh box_input = *box;
+    absl::StatusOr<std::unique_ptr<SurfaceSlide>> box_slide = SurfaceSlide::Build(*box);
+    ASSERT_TRUE(box_slide.ok());
+    SmoothingParams params;
+    params.threads = 2;
+    params.slide_boundary = true;
+    ASSERT_TRUE(Smooth(*box, params, {}, nullptr, box_slide->get()).ok());
+    for (NodeId node = 0; node < box_input.node_count(); ++node) {
+      const double in[3] = {box_input.x()[node], box_input.y()[node], box_input.z()[node]};
+      const double out[3] = {box->x()[node], box->y()[node], box->z()[node]};
+      for (int c = 0; c < 3; ++c) {
+        if (in[c] == 0.0 || in[c] == 4.0) EXPECT_NEAR(out[c], in[c], 1e-12) << "node " << node;
+        EXPECT_GE(out[c], -1e-12);
+        EXPECT_LE(out[c], 4.0 + 1e-12);
+      }
+    }
+
+    constexpr int kSides = 16;
+    constexpr double kHeight = 3.0;
+    Mesh cylinder = test::PolygonPrism(kSides, 6, kHeight);
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> shift(-0.15, 0.15);
+    for (double& z : cylinder.z()) {
+      if (z > 0.0 && z < kHeight) z += shift(random);
+    }
+    const Mesh cylinder_input = cylinder;
+    absl::StatusOr<std::unique_ptr<SurfaceSlide>> cylinder_slide = SurfaceSlide::Build(cylinder);
+    ASSERT_TRUE(cylinder_slide.ok());
+    ASSERT_TRUE(Smooth(cylinder, params, {}, nullptr, cylinder_slide->get()).ok());
+    std::int64_t moved = 0;
+    for (NodeId node = 0; node < cylinder_input.node_count(); ++node) {
+      const double x_in = cylinder_input.x()[node], y_in = cylinder_input.y()[node];
+      const double z_in = cylinder_input.z()[node];
+      const double x = cylinder.x()[node], y = cylinder.y()[node], z = cylinder.z()[node];
+      if (z_in == 0.0 || z_in == kHeight) EXPECT_NEAR(z, z_in, 1e-12) << "node " << node;
+      if (std::hypot(x_in, y_in) > 0.5) {  // a rim node: on the side facets
+        EXPECT_LE(DistanceToPolygon(x, y, kSides), 1e-12) << "node " << node;
+        EXPECT_GE(z, -1e-12);
+        EXPECT_LE(z, kHeight + 1e-12);
+        moved += x != x_in || y != y_in || z != z_in;
+      }
+    }
+    EXPECT_GT(moved, 0);
+  }
 }
 
 }  // namespace
