@@ -434,8 +434,14 @@ TEST(CliErrors, BoundaryOptionsAreChecked) {
   // tests/client/remote_cli_test.cc (RemoteCliTest.SlidingBoundaryAndKeptLayersMatchLocal).
   const testing::RunResult remote = RunGetme({"smooth", "a.vtk", "b.vtk", "--boundary", "slide",
                                               "--keep-layers", "--server", "127.0.0.1:1"});
+#if GETME_SERVICE_BUILT
   EXPECT_EQ(remote.exit_status, 1) << remote.err;
   EXPECT_NE(remote.err.find("a.vtk"), std::string::npos) << remote.err;
+#else
+  // A build without the service (GETME_BUILD_SERVICE=OFF) refuses --server as such.
+  EXPECT_EQ(remote.exit_status, 2) << remote.err;
+  EXPECT_NE(remote.err.find("built without the gRPC service"), std::string::npos) << remote.err;
+#endif
   // Kept layers are measured from the walls, which a free boundary moves.
   const testing::RunResult free_layers =
       RunGetme({"smooth", "a.vtk", "b.vtk", "--keep-layers", "--boundary", "free"});
