@@ -11,10 +11,14 @@ absl::StatusOr<std::unique_ptr<SurfaceSlide>> SurfaceSlide::Build(const Mesh& me
   if (!surface.ok()) return surface.status();
   absl::StatusOr<SurfaceProjector> projector = SurfaceProjector::Build(mesh, *surface);
   if (!projector.ok()) return projector.status();
+  // The columns are needed in any case (Slides() holds their boundary nodes); their walls and the
+  // engine's description of them only when they are kept.
   LayerColumns layers = FindLayerColumns(mesh);
-  auto walls = std::make_unique<WallDistance>(mesh, layers);
+  std::unique_ptr<WallDistance> walls;
+  if (options.keep_layers) walls = std::make_unique<WallDistance>(mesh, layers);
   std::unique_ptr<SurfaceSlide> slide(new SurfaceSlide(
       options, *std::move(surface), *std::move(projector), std::move(layers), std::move(walls)));
+  if (!options.keep_layers) return slide;
   slide->kept_ = DescribeKeptLayers(mesh, slide->layers_, *slide->walls_);
   for (const NodeId node : slide->kept_.nodes) {
     slide->wall_distance_.push_back(

@@ -55,8 +55,8 @@ class SurfaceSlide final : public BoundarySlide {
   const BoundarySurface& surface() const { return surface_; }
   // The boundary-layer columns and their walls as the input had them.
   const LayerColumns& layers() const { return layers_; }
+  // With keep_layers only: the walls and the columns as the engine keeps them.
   const WallDistance& walls() const { return *walls_; }
-  // The columns as the engine keeps them (kept_layers() without keep_layers, for measuring).
   const KeptLayers& columns() const { return kept_; }
 
  private:
