@@ -1,6 +1,7 @@
 #include "getme/smoothing/polish.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -148,6 +149,45 @@ bool EvaluateTrial(const Mesh& mesh, NodeId node, PolishState& state, double& co
   return true;
 }
 
+// A sliding node moves within its surface, or along its feature curve: its Newton step is the
+// one of the cost restricted to that tangent space. The free 3-D step, projected afterwards,
+// loses its normal part and with it the Hessian's coupling to the normal: measured on
+// the pinned thin-layer arteries, the sliding polish then ended below the held one on three of
+// eight (docs/boundary.md#when-nodes-slide).
+// The tangent space is read off the projection itself: small moves along the three axes, put
+// back onto the surface, span it (two directions on a face, one on a curve, none at a corner).
+// Replaces `g` and `h` by their restriction Bᵀg, BᵀhB written back in the basis B (a projector
+// P = BBᵀ: g ← Pg, h ← PhP + (I − P)), so the caller's Newton solve gives a tangential step.
+void RestrictToTangent(const SmoothingContext& context, NodeId node, const Vec3& at, Vec3& g,
+                       Eigen::Matrix3d& h) {
+  const Mesh& mesh = context.mesh;
+  double nearest2 = std::numeric_limits<double>::infinity();
+  for (ElementId e : mesh.node_elements(node)) {
+    for (NodeId other : mesh.element_nodes(e)) {
+      if (other == node) continue;
+      const Vec3 p(mesh.x()[other], mesh.y()[other], mesh.z()[other]);
+      nearest2 = std::min(nearest2, (p - at).squaredNorm());
+    }
+  }
+  const double epsilon = 1e-4 * std::sqrt(nearest2);
+  Eigen::Matrix3d moves;
+  for (int k = 0; k < 3; ++k) {
+    Vec3 trial = at;
+    trial[k] += epsilon;
+    moves.col(k) = (context.Placed(node, trial, at) - at) / epsilon;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> spans(moves * moves.transpose());
+  Eigen::Matrix3d projector = Eigen::Matrix3d::Zero();
+  for (int k = 0; k < 3; ++k) {
+    if (spans.eigenvalues()[k] > 0.25) {
+      const Vec3 direction = spans.eigenvectors().col(k);
+      projector += direction * direction.transpose();
+    }
+  }
+  g = projector * g;
+  h = projector * h * projector + (Eigen::Matrix3d::Identity() - projector);
+}
+
 // One damped Newton step of one node. Reads and writes only the node's coordinates and its
 // elements' entries (and marks its neighbours stale), so nodes of one colour may run
 // concurrently.
@@ -161,6 +201,9 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   Vec3 g;
   Eigen::Matrix3d h;
   if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h)) return NodeStep::kRefused;
+  if (context.sliding[node]) {
+    RestrictToTangent(context, node, Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]), g, h);
+  }
   if (!g.allFinite() || g.squaredNorm() == 0.0) return NodeStep::kConverged;
 
   // Newton direction from the summed 3×3 Hessian (positive semi-definite where the elements are
@@ -355,10 +398,9 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
   return !cancelled;
 }
 
-}  // namespace
-
-absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
-  const double phase_start = context.ElapsedSeconds();
+// The three stages of polish.h over the nodes context.movable says are free; false if cancelled.
+bool RunStages(SmoothingContext& context, SmoothingContext::Summary& current,
+               PhaseSummary& summary) {
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
   // Once per call, in a fixed order: the sets, and so the order of the node steps, depend on the
@@ -366,9 +408,6 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
   const NodeColouring colouring = ColourNodes(mesh, context.movable);
   PolishState state(mesh.node_count());
   state.trial_quality.assign(mesh.element_count(), 0.0);
-
-  SmoothingContext::Summary current = context.Summarize();
-  PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
   bool finished = true;
   // Worst elements first: the mean stage cannot lower q_min, so whatever q_min the polish is to
   // reach must come before it.
@@ -400,6 +439,16 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
                           current, summary);
     }
   }
+  return finished;
+}
+
+}  // namespace
+
+absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
+  const double phase_start = context.ElapsedSeconds();
+  SmoothingContext::Summary current = context.Summarize();
+  PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
+  const bool finished = RunStages(context, current, summary);
   context.FinishPhase(summary, current, phase_start);
   if (!finished) return absl::CancelledError("smoothing cancelled during the polish stage");
   return summary;

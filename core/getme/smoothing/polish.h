@@ -22,6 +22,10 @@ namespace getme {
 //      again above the q_min that reached.
 // So the mesh's q_min never falls below the polish's input and nothing inverts.
 //
+// A sliding boundary node (context.sliding) takes the Newton step of its cost restricted to its
+// surface's tangent plane, or its feature curve's tangent, and the trial is put back onto the
+// surface before it is judged (docs/boundary.md#when-nodes-slide).
+//
 // Nodes are swept one colour of a node colouring (node_colouring.h) at a time: nodes of one
 // colour share no element, so they move in parallel and any thread count gives the same bits.
 // A stage stops after two sweeps without a new best, when no node moved, when the gain still to

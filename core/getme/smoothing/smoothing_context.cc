@@ -1,6 +1,7 @@
 #include "getme/smoothing/smoothing_context.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "getme/elements/vec3.h"
 #include "getme/parallel/block_loops.h"
@@ -72,6 +73,19 @@ void SmoothingContext::FinishPhase(PhaseSummary& summary, const Summary& state,
   summary.seconds = ElapsedSeconds() - phase_start;
   Report({summary.phase, summary.iterations, state.q_min, state.q_mean, state.invalid, 0,
           ElapsedSeconds(), true});
+}
+
+SlidingNodesHeld::SlidingNodesHeld(SmoothingContext& context)
+    : context_(context), movable_(context.movable), sliding_(context.sliding) {
+  for (std::size_t node = 0; node < sliding_.size(); ++node) {
+    if (sliding_[node]) context_.movable[node] = 0;
+  }
+  std::fill(context_.sliding.begin(), context_.sliding.end(), std::uint8_t{0});
+}
+
+SlidingNodesHeld::~SlidingNodesHeld() {
+  context_.movable = std::move(movable_);
+  context_.sliding = std::move(sliding_);
 }
 
 double ElementQualityOrInvalid(const Mesh& mesh, ElementId element) {

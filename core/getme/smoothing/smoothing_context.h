@@ -66,6 +66,23 @@ struct SmoothingContext {
   void FinishPhase(PhaseSummary& summary, const Summary& state, double phase_start) const;
 };
 
+// While it lives, the context's sliding boundary nodes are held like any boundary node: the
+// phases run as on a held boundary. With a sliding boundary and the polish, GETMe's substeps and
+// a first polish run under it, so sliding starts from exactly the held run's result
+// (docs/boundary.md#when-nodes-slide).
+class SlidingNodesHeld {
+ public:
+  explicit SlidingNodesHeld(SmoothingContext& context);
+  ~SlidingNodesHeld();
+  SlidingNodesHeld(const SlidingNodesHeld&) = delete;
+  SlidingNodesHeld& operator=(const SlidingNodesHeld&) = delete;
+
+ private:
+  SmoothingContext& context_;
+  std::vector<std::uint8_t> movable_;
+  std::vector<std::uint8_t> sliding_;
+};
+
 // Mean ratio or kInvalidQuality of one element, dispatched on its type.
 double ElementQualityOrInvalid(const Mesh& mesh, ElementId element);
 
