@@ -70,6 +70,12 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
   absl::StatusOr<remote::GridWireMesh> sent = remote::ToWireMesh(run->document.grid);
   if (!sent.ok()) return fail(WithInput(options.input, sent.status()), kExitFailure);
   AddFixedNodes(run->option_fixed, sent->mesh);
+  if (params.slide_boundary) {
+    const std::vector<formats::TaggedFace> tagged = formats::TaggedSurfaceFaces(run->document);
+    if (absl::Status status = remote::AddSurfaceGroups(tagged, sent->mesh); !status.ok()) {
+      return fail(WithInput(options.input, status), kExitFailure);
+    }
+  }
 
   remote::SmoothJobOptions job;
   job.parameters = wire::ToWireParameters(params);

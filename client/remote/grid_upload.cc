@@ -104,4 +104,30 @@ absl::Status ApplyCoordinates(std::span<const double> coordinates,
   return absl::OkStatus();
 }
 
+absl::Status AddSurfaceGroups(std::span<const formats::TaggedFace> faces, v1::Mesh& mesh) {
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const formats::TaggedFace& face = faces[f];
+    if (face.tag == 0) continue;
+    if (face.tag < 0 || face.tag > std::numeric_limits<std::uint32_t>::max()) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("tagged face ", f, " has tag ", face.tag,
+                       ": the service takes surface group tags from 1 to ",
+                       std::numeric_limits<std::uint32_t>::max()));
+    }
+    google::protobuf::RepeatedField<std::uint32_t>* nodes =
+        face.size == 3 ? mesh.mutable_group_triangles() : mesh.mutable_group_quads();
+    for (int k = 0; k < face.size; ++k) {
+      if (face.nodes[k] < 0 || face.nodes[k] > std::numeric_limits<std::uint32_t>::max()) {
+        return absl::InvalidArgumentError(absl::StrCat("tagged face ", f, " has node ",
+                                                       face.nodes[k],
+                                                       ", which does not fit the wire's uint32"));
+      }
+      nodes->Add(static_cast<std::uint32_t>(face.nodes[k]));
+    }
+    (face.size == 3 ? mesh.mutable_triangle_groups() : mesh.mutable_quad_groups())
+        ->Add(static_cast<std::uint32_t>(face.tag));
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace getme::remote

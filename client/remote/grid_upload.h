@@ -6,6 +6,7 @@
 
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
+#include "formats/mesh_file.h"
 #include "formats/unstructured_grid.h"
 #include "getme/v1/mesh.pb.h"
 
@@ -30,6 +31,13 @@ struct GridWireMesh {
 // nonzero `fixed` point-data value marks a fixed node. InvalidArgument for cells of any other
 // type, a node id that does not fit uint32, or a `fixed` array of the wrong length.
 absl::StatusOr<GridWireMesh> ToWireMesh(const formats::UnstructuredGrid& file);
+
+// Adds a file's tagged triangles and quads (formats::TaggedSurfaceFaces) to the wire mesh as its
+// surface groups (mesh.proto: group_triangles, ...), for a sliding boundary. Faces tagged 0 carry
+// no group and are not sent, so the server puts them with the untagged boundary, as `getme smooth`
+// does. InvalidArgument naming the face (its cell index among the tagged faces) for a tag that
+// does not fit uint32.
+absl::Status AddSurfaceGroups(std::span<const formats::TaggedFace> faces, v1::Mesh& mesh);
 
 // Writes smoothed coordinates (x0, y0, z0, x1, …, as on the wire) into the file's POINTS as
 // doubles. InvalidArgument if the count does not match the file's points.

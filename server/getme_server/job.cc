@@ -37,6 +37,7 @@ Job::Job(std::string id, wire::UploadedMesh mesh, std::int64_t upload_bytes, Smo
       result_(std::make_unique<JobResult>()) {
   result_->mesh = std::move(mesh.mesh);
   result_->ids = std::move(mesh.ids);
+  result_->surface_groups = std::move(mesh.surface_groups);
   result_->options = std::move(options);
 }
 

@@ -24,8 +24,12 @@ namespace {
 // before anything moves, as `getme smooth` builds them from its input file. A mesh they cannot be
 // built from is the caller's: INVALID_ARGUMENT with the surface's message.
 absl::StatusOr<std::unique_ptr<surface::SurfaceSlide>> BuildSurfaceSlide(
-    const Mesh& mesh, const SmoothingParams& params) {
+    const Mesh& mesh, std::span<const surface::GroupedFace> groups, const SmoothingParams& params) {
   surface::SlideOptions options;
+  // The caller's tagged faces, as a file's: the interfaces between volumes are counted, not
+  // refused (mesh.proto).
+  options.groups = groups;
+  options.skip_interior_groups = true;
   options.feature_angle_degrees = params.feature_angle_degrees;
   options.slide_boundary = params.slide_boundary;
   options.keep_layers = params.keep_layers;
@@ -58,7 +62,7 @@ absl::Status RunSmoothing(JobResult& work, const SmoothingParams& params,
   std::optional<surface::LayerHeights> layers_before;
   if (params.slide_boundary || params.keep_layers) {
     absl::StatusOr<std::unique_ptr<surface::SurfaceSlide>> built =
-        BuildSurfaceSlide(work.mesh, params);
+        BuildSurfaceSlide(work.mesh, work.surface_groups, params);
     if (!built.ok()) return built.status();
     slide = *std::move(built);
     if (params.keep_layers) {

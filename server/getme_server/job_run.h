@@ -1,23 +1,26 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "absl/status/status.h"
 #include "getme/mesh/mesh.h"
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_surface/boundary_surface.h"
 #include "getme_wire/mesh_ids.h"
 
 namespace getme::server {
 
 // What a job works on and, once it succeeded, hands out once: the uploaded mesh (smoothed in
-// place), the caller's ids and fixed-node list (echoed with the result), the result options, and
-// the summary.
+// place), the caller's ids and fixed-node list (echoed with the result), the surface groups a
+// sliding boundary keeps its nodes in, the result options, and the summary.
 struct JobResult {
   v1::SmoothResult summary;
   Mesh mesh;
   wire::WireMeshIds ids;
+  std::vector<surface::GroupedFace> surface_groups;
   v1::ResultOptions options;
 };
 

@@ -101,6 +101,38 @@ TEST_F(RemoteCliTest, RemoteSmoothOfGmshFileWithGroupsMatchesLocal) {
   EXPECT_NE(local_bytes, ReadFile(input));
 }
 
+// A sliding boundary on a file with physical groups (inlet, walls): the client sends the tagged
+// faces (mesh.proto's group fields), so the server keeps the same surface groups as the local run
+// and writes the same file. Without them it would see one group and slide inlet nodes onto the
+// walls' side of their common edges.
+TEST_F(RemoteCliTest, SlidingOnAFileWithPhysicalGroupsKeepsTheGroupsRemotely) {
+  const std::string input = std::string(GETME_GROUPED_HYBRID_DIR) + "/hybrid-groups.msh";
+  const std::string local_out = TempPath("local.msh");
+  const std::string remote_out = TempPath("remote.msh");
+  const std::vector<std::string> options = {"--boundary", "slide",     "--json",
+                                            "--quiet",    "--threads", "1"};
+  std::vector<std::string> local_args = {"smooth", input, local_out};
+  local_args.insert(local_args.end(), options.begin(), options.end());
+  const RunResult local = RunGetme(local_args);
+  ASSERT_EQ(local.exit_status, 0) << local.err;
+  std::vector<std::string> remote_args = {"smooth", input, remote_out, "--server", target_};
+  remote_args.insert(remote_args.end(), options.begin(), options.end());
+  const RunResult remote = RunGetme(remote_args);
+  ASSERT_EQ(remote.exit_status, 0) << remote.err;
+  const JsonValue local_result = JsonLines(local.out).back();
+  const JsonValue remote_result = JsonLines(remote.out).back();
+  const JsonValue* local_slide = local_result.Find("boundary_slide");
+  const JsonValue* remote_slide = remote_result.Find("boundary_slide");
+  ASSERT_NE(local_slide, nullptr) << local.out;
+  ASSERT_NE(remote_slide, nullptr) << remote.out;
+  EXPECT_EQ(local_slide->Find("surface_groups")->number, 3);  // inlet, walls, and group 0
+  EXPECT_EQ(remote_slide->Find("surface_groups")->number, 3);
+  EXPECT_EQ(remote_slide->Find("feature_edges")->number,
+            local_slide->Find("feature_edges")->number);
+  EXPECT_GT(remote_slide->Find("slid_nodes")->number, 0);
+  EXPECT_TRUE(ReadFile(local_out) == ReadFile(remote_out)) << "remote and local .msh differ";
+}
+
 TEST_F(RemoteCliTest, RemoteSmoothWritesTheSameFileAsLocal) {
   for (const std::string& input : {kHexBlock, kHybrid}) {
     const std::string local_out = TempPath("local.vtk");

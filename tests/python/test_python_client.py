@@ -530,6 +530,48 @@ class Boundary(unittest.TestCase):
                          sum(p.iterations for p in report.phases if p.phase == "layers"))
         self.assertGreaterEqual(report.iterations["layers"], 1)
 
+    def test_tagged_faces_go_along_as_surface_groups(self):
+        # A 4 x 4 x 4 hexahedral cube whose top quads are physical groups 7 (x < 2) and 8
+        # (x > 2); top nodes moved within the top face, those on x = 2 along y only. The groups'
+        # common line is a feature curve: its nodes keep x = 2 exactly. Untagged, it is an
+        # ordinary face line and its nodes leave it.
+        n = 4
+        rng = np.random.default_rng(5)
+
+        def node(i, j, k):
+            return i + (n + 1) * (j + (n + 1) * k)
+
+        points = np.array([(i, j, k) for k in range(n + 1) for j in range(n + 1)
+                           for i in range(n + 1)], dtype=float)
+        for k in range(n + 1):
+            for j in range(1, n):
+                for i in range(1, n):
+                    p = node(i, j, k)
+                    if 0 < k < n:
+                        points[p] += rng.uniform(-0.3, 0.3, 3)
+                    elif k == n:
+                        points[p, 1] += rng.uniform(-0.3, 0.3)
+                        if i != n // 2:
+                            points[p, 0] += rng.uniform(-0.3, 0.3)
+        hexahedra = np.array([[node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
+                               node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
+                               node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)]
+                              for k in range(n) for j in range(n) for i in range(n)])
+        quads = np.array([[node(i, j, n), node(i + 1, j, n), node(i + 1, j + 1, n),
+                           node(i, j + 1, n)] for j in range(n) for i in range(n)])
+        line = [node(n // 2, j, n) for j in range(1, n)]
+        off_line = {}
+        for tagged in (False, True):
+            tags = np.array([7 if i < n // 2 else 8 for j in range(n) for i in range(n)])
+            mesh = meshio.Mesh(points, [("hexahedron", hexahedra), ("quad", quads)],
+                               cell_data={"gmsh:physical": [np.zeros(len(hexahedra), dtype=int),
+                                                            tags if tagged else 0 * tags]})
+            smoothed, report = getme.smooth(mesh, SERVER.address, boundary="slide")
+            self.assertEqual(report.boundary_slide.surface_groups, 3 if tagged else 1)
+            off_line[tagged] = max(abs(smoothed.points[p, 0] - 2.0) for p in line)
+        self.assertEqual(off_line[True], 0.0)
+        self.assertGreater(off_line[False], 1e-3)
+
     def test_a_held_or_free_boundary_reports_no_slide(self):
         points, cells = layer_block()
         _, report = getme.smooth((points, cells), SERVER.address, max_iterations=3)

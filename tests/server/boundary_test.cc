@@ -190,5 +190,121 @@ TEST(BoundaryServiceTest, BadBoundaryRequestsAreInvalidArgumentsNamingTheFields)
   expect_refused(parameters, {"parameters.keep_layers", "BOUNDARY_FREE"});
 }
 
+// A 4 × 4 × 4 cube of unit hexahedra on the wire (VTK order), whose top face z = 4 is split along
+// x = 2 into two surface groups (tags 7 and 8) when `tagged`. Top nodes inside the face are moved
+// up to 0.3 within it (along y only on the line x = 2), interior nodes up to 0.3 in each axis, so
+// smoothing wants to move the top face's nodes. One more tagged quad lies inside the cube: an
+// interface, which a file's tags have too, counted and left out.
+v1::Mesh GroupedCube(bool tagged) {
+  constexpr int n = 4;
+  const auto id = [](int i, int j, int k) {
+    return static_cast<std::uint32_t>(i + (n + 1) * (j + (n + 1) * k));
+  };
+  std::uint64_t state = 12345;
+  const auto jitter = [&]() {  // deterministic, in [-0.3, 0.3]
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 0.6 * static_cast<double>(state >> 11) / static_cast<double>(1ULL << 53) - 0.3;
+  };
+  v1::Mesh mesh;
+  for (int k = 0; k <= n; ++k) {
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        double x = i, y = j, z = k;
+        const bool inside_xy = i > 0 && i < n && j > 0 && j < n;
+        if (inside_xy && k > 0 && k < n) {
+          x += jitter();
+          y += jitter();
+          z += jitter();
+        } else if (inside_xy && k == n) {
+          if (i != n / 2) x += jitter();
+          y += jitter();
+        }
+        mesh.add_coordinates(x);
+        mesh.add_coordinates(y);
+        mesh.add_coordinates(z);
+      }
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        for (const std::uint32_t node :
+             {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+              id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)}) {
+          mesh.add_hexahedra(node);
+        }
+      }
+    }
+  }
+  if (!tagged) return mesh;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      for (const std::uint32_t node :
+           {id(i, j, n), id(i + 1, j, n), id(i + 1, j + 1, n), id(i, j + 1, n)}) {
+        mesh.add_group_quads(node);
+      }
+      mesh.add_quad_groups(i < n / 2 ? 7 : 8);
+    }
+  }
+  for (const std::uint32_t node : {id(1, 1, 2), id(2, 1, 2), id(2, 2, 2), id(1, 2, 2)}) {
+    mesh.add_group_quads(node);
+  }
+  mesh.add_quad_groups(9);
+  return mesh;
+}
+
+TEST(BoundaryServiceTest, SurfaceGroupsOnTheWireKeepTheirNodes) {
+  // The two groups' common line x = 2 is a feature curve: its nodes slide along it and keep x = 2
+  // exactly (read from the result's coordinates). Without the groups the same nodes are ordinary
+  // face nodes and move off the line, so the groups are what holds them.
+  TestServer test = StartTestServer();
+  v1::SmoothingParameters parameters;
+  parameters.set_boundary(v1::BOUNDARY_SLIDE);
+  parameters.set_threads(2);
+  double largest_off_line[2] = {0.0, 0.0};
+  for (const bool tagged : {false, true}) {
+    const v1::Mesh wire = GroupedCube(tagged);
+    const SmoothOutcome outcome = CallSmooth(*test.stub, SmoothRequests(wire, parameters));
+    ASSERT_TRUE(outcome.status.ok()) << outcome.status.error_message();
+    ASSERT_TRUE(outcome.result.has_boundary_slide());
+    const v1::BoundarySlideReport& slide = outcome.result.boundary_slide();
+    EXPECT_EQ(slide.surface_groups(), tagged ? 3 : 1);
+    EXPECT_EQ(slide.interior_grouped_faces(), tagged ? 1 : 0);
+    ASSERT_EQ(outcome.mesh.coordinates_size(), wire.coordinates_size());
+    for (int j = 1; j < 4; ++j) {
+      const int node = 2 + 5 * (j + 5 * 4);
+      const double x = outcome.mesh.coordinates(3 * node);
+      EXPECT_EQ(wire.coordinates(3 * node), 2.0);
+      largest_off_line[tagged] = std::max(largest_off_line[tagged], std::abs(x - 2.0));
+    }
+  }
+  EXPECT_EQ(largest_off_line[1], 0.0);
+  EXPECT_GT(largest_off_line[0], 1e-3);
+}
+
+TEST(BoundaryServiceTest, BadSurfaceGroupsAreInvalidArgumentsNamingTheField) {
+  TestServer test = StartTestServer();
+  v1::SmoothingParameters parameters;
+  parameters.set_boundary(v1::BOUNDARY_SLIDE);
+  const auto expect_refused = [&](const v1::Mesh& wire, const char* message) {
+    const SmoothOutcome outcome = CallSmooth(*test.stub, SmoothRequests(wire, parameters));
+    EXPECT_EQ(outcome.status.error_code(), grpc::StatusCode::INVALID_ARGUMENT)
+        << outcome.status.error_message();
+    EXPECT_THAT(outcome.status.error_message(), HasSubstr(message));
+    EXPECT_FALSE(outcome.have_result);
+  };
+  v1::Mesh wire = GroupedCube(true);
+  wire.add_quad_groups(7);
+  expect_refused(wire, "mesh.quad_groups has 18 tags but mesh.group_quads has 17 quads");
+  wire = GroupedCube(true);
+  wire.add_group_triangles(0);
+  wire.add_group_triangles(1);
+  expect_refused(wire, "mesh.group_triangles has 2 node indices, not a multiple of 3");
+  wire = GroupedCube(true);
+  wire.set_group_quads(5, 125);
+  expect_refused(wire,
+                 "mesh.group_quads[5] = 125 (quad 1) is out of range: the mesh has 125 nodes");
+}
+
 }  // namespace
 }  // namespace getme::server::testing

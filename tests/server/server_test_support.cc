@@ -135,6 +135,14 @@ std::vector<v1::MeshChunk> SplitIntoChunks(const v1::Mesh& mesh, std::size_t byt
       mesh.node_ids(), [](v1::Mesh& m) { return m.mutable_node_ids(); }, 10);
   slice(
       mesh.element_ids(), [](v1::Mesh& m) { return m.mutable_element_ids(); }, 10);
+  slice(
+      mesh.group_triangles(), [](v1::Mesh& m) { return m.mutable_group_triangles(); }, 5);
+  slice(
+      mesh.group_quads(), [](v1::Mesh& m) { return m.mutable_group_quads(); }, 5);
+  slice(
+      mesh.triangle_groups(), [](v1::Mesh& m) { return m.mutable_triangle_groups(); }, 5);
+  slice(
+      mesh.quad_groups(), [](v1::Mesh& m) { return m.mutable_quad_groups(); }, 5);
   return chunks;
 }
 

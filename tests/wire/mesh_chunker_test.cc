@@ -20,6 +20,13 @@ v1::Mesh SampleMesh(int nodes, int tets, int hexes) {
   for (int i = 0; i < 8 * hexes; ++i) mesh.add_hexahedra((7 * i) % nodes);
   for (int i = 0; i < nodes; i += 3) mesh.add_fixed_nodes(i);
   for (int i = 0; i < nodes; ++i) mesh.add_node_ids(1000 + i);
+  // Surface groups: a triangle and a quad per hundred nodes.
+  for (int f = 0; f < nodes / 100; ++f) {
+    for (int k = 0; k < 3; ++k) mesh.add_group_triangles((11 * f + k) % nodes);
+    for (int k = 0; k < 4; ++k) mesh.add_group_quads((13 * f + k) % nodes);
+    mesh.add_triangle_groups(1 + f % 5);
+    mesh.add_quad_groups(7 + f % 3);
+  }
   return mesh;
 }
 
@@ -43,6 +50,8 @@ TEST(MeshChunker, ChunksConcatenateToTheMeshAndStayUnderBudget) {
     EXPECT_EQ(chunk.mesh().coordinates_size() % 3, 0) << "a node was split across chunks";
     EXPECT_EQ(chunk.mesh().tetrahedra_size() % 4, 0) << "a tetrahedron was split";
     EXPECT_EQ(chunk.mesh().hexahedra_size() % 8, 0) << "a hexahedron was split";
+    EXPECT_EQ(chunk.mesh().group_triangles_size() % 3, 0) << "a grouped triangle was split";
+    EXPECT_EQ(chunk.mesh().group_quads_size() % 4, 0) << "a grouped quad was split";
     joined.MergeFrom(chunk.mesh());
   }
   EXPECT_EQ(joined.SerializeAsString(), mesh.SerializeAsString());

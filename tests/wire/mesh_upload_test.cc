@@ -110,6 +110,40 @@ TEST(MeshUpload, SplitNodesAndElementsAndInterleavedTypesKeepTheWireNumbering) {
   EXPECT_EQ(back->mesh.type(static_cast<ElementId>(tetrahedra)), ElementType::kHexahedron);
 }
 
+TEST(MeshUpload, SurfaceGroupTagsBecomeDenseGroupsTrianglesFirst) {
+  // Tags 40, 7, 40 on triangles and 9 on a quad: groups in ascending tag order from 1 (7 → 1,
+  // 9 → 2, 40 → 3), group 0 left to the faces not listed; every value sent in a part of its own.
+  const v1::Mesh whole = ToWireMesh(Hybrid());
+  MeshUpload upload(1'000'000);
+  auto send = [&](auto field, const auto& values) {
+    for (const auto value : values) {
+      v1::Mesh part;
+      (part.*field)()->Add(value);
+      ASSERT_TRUE(upload.Add(part).ok());
+    }
+  };
+  send(&v1::Mesh::mutable_coordinates, whole.coordinates());
+  send(&v1::Mesh::mutable_hexahedra, whole.hexahedra());
+  send(&v1::Mesh::mutable_tetrahedra, whole.tetrahedra());
+  send(&v1::Mesh::mutable_pyramids, whole.pyramids());
+  send(&v1::Mesh::mutable_wedges, whole.wedges());
+  send(&v1::Mesh::mutable_quad_groups, std::vector<std::uint32_t>{9});
+  send(&v1::Mesh::mutable_group_quads, std::vector<std::uint32_t>{4, 5, 6, 7});
+  send(&v1::Mesh::mutable_group_triangles, std::vector<std::uint32_t>{0, 1, 2, 1, 2, 3, 2, 3, 0});
+  send(&v1::Mesh::mutable_triangle_groups, std::vector<std::uint32_t>{40, 7, 40});
+  absl::StatusOr<UploadedMesh> back = std::move(upload).Finish();
+  ASSERT_TRUE(back.ok()) << back.status();
+  ASSERT_EQ(back->surface_groups.size(), 4u);
+  const int expected_groups[] = {3, 1, 3, 2};
+  const int expected_sizes[] = {3, 3, 3, 4};
+  for (int f = 0; f < 4; ++f) {
+    EXPECT_EQ(back->surface_groups[f].group, expected_groups[f]) << "face " << f;
+    EXPECT_EQ(back->surface_groups[f].size, expected_sizes[f]) << "face " << f;
+  }
+  EXPECT_EQ(back->surface_groups[1].nodes[0], 1);
+  EXPECT_EQ(back->surface_groups[3].nodes[3], 7);
+}
+
 TEST(MeshUpload, AHalfElementAtTheEndNamesItsField) {
   v1::Mesh wire = ToWireMesh(Hybrid());
   wire.add_pyramids(0);

@@ -63,6 +63,13 @@ void WireMeshTarget::AddElementIds(std::span<const std::uint64_t> ids) {
   mesh_.mutable_element_ids()->Add(ids.begin(), ids.end());
 }
 
+void WireMeshTarget::AddSurfaceGroups(const v1::Mesh& part) {
+  mesh_.mutable_group_triangles()->MergeFrom(part.group_triangles());
+  mesh_.mutable_group_quads()->MergeFrom(part.group_quads());
+  mesh_.mutable_triangle_groups()->MergeFrom(part.triangle_groups());
+  mesh_.mutable_quad_groups()->MergeFrom(part.quad_groups());
+}
+
 std::int64_t MeshAssembler::elements() const {
   std::int64_t count = 0;
   for (int group = 0; group < kWireElementGroupCount; ++group) {
@@ -95,6 +102,10 @@ absl::Status MeshAssembler::Add(const v1::Mesh& part) {
   if (!part.element_ids().empty()) {
     element_ids_ += part.element_ids_size();
     target_.AddElementIds(AsSpan(part.element_ids()));
+  }
+  if (!part.group_triangles().empty() || !part.group_quads().empty() ||
+      !part.triangle_groups().empty() || !part.quad_groups().empty()) {
+    target_.AddSurfaceGroups(part);
   }
   return absl::OkStatus();
 }

@@ -23,6 +23,8 @@ class AssemblyTarget {
   virtual void AddFixedNodes(std::span<const std::uint32_t> nodes) = 0;
   virtual void AddNodeIds(std::span<const std::uint64_t> ids) = 0;
   virtual void AddElementIds(std::span<const std::uint64_t> ids) = 0;
+  // The part's tagged boundary faces and their tags, as they came (checked when the mesh is built).
+  virtual void AddSurfaceGroups(const v1::Mesh& part) = 0;
 };
 
 // Appends to a wire mesh: how a client gathers a result.
@@ -33,6 +35,7 @@ class WireMeshTarget final : public AssemblyTarget {
   void AddFixedNodes(std::span<const std::uint32_t> nodes) override;
   void AddNodeIds(std::span<const std::uint64_t> ids) override;
   void AddElementIds(std::span<const std::uint64_t> ids) override;
+  void AddSurfaceGroups(const v1::Mesh& part) override;
   v1::Mesh& mesh() { return mesh_; }
 
  private:

@@ -19,7 +19,11 @@ enum class MeshField {
   kPyramids,
   kFixedNodes,
   kNodeIds,
-  kElementIds
+  kElementIds,
+  kGroupTriangles,
+  kGroupQuads,
+  kTriangleGroups,
+  kQuadGroups
 };
 namespace {
 
@@ -29,7 +33,7 @@ struct FieldLayout {
   std::size_t bytes_per_value;
   bool per_node;  // items are nodes (ChunkLimits.max_nodes applies)
 };
-constexpr std::array<FieldLayout, 8> kFields = {{
+constexpr std::array<FieldLayout, 12> kFields = {{
     {MeshField::kCoordinates, 3, 8, true},
     {MeshField::kTetrahedra, 4, 5, false},
     {MeshField::kHexahedra, 8, 5, false},
@@ -38,6 +42,10 @@ constexpr std::array<FieldLayout, 8> kFields = {{
     {MeshField::kFixedNodes, 1, 5, false},
     {MeshField::kNodeIds, 1, 10, true},
     {MeshField::kElementIds, 1, 10, false},
+    {MeshField::kGroupTriangles, 3, 5, false},
+    {MeshField::kGroupQuads, 4, 5, false},
+    {MeshField::kTriangleGroups, 1, 5, false},
+    {MeshField::kQuadGroups, 1, 5, false},
 }};
 
 int GroupOf(MeshField field) { return static_cast<int>(field) - 1; }
@@ -81,6 +89,14 @@ class ProtoMeshSource final : public WireMeshSource {
         return mesh_.node_ids_size();
       case MeshField::kElementIds:
         return mesh_.element_ids_size();
+      case MeshField::kGroupTriangles:
+        return mesh_.group_triangles_size();
+      case MeshField::kGroupQuads:
+        return mesh_.group_quads_size();
+      case MeshField::kTriangleGroups:
+        return mesh_.triangle_groups_size();
+      case MeshField::kQuadGroups:
+        return mesh_.quad_groups_size();
       default:
         return Connectivity(mesh_, GroupOf(field)).size();
     }
@@ -96,6 +112,14 @@ class ProtoMeshSource final : public WireMeshSource {
         return AppendRange(mesh_.node_ids(), begin, end, *out.mutable_node_ids());
       case MeshField::kElementIds:
         return AppendRange(mesh_.element_ids(), begin, end, *out.mutable_element_ids());
+      case MeshField::kGroupTriangles:
+        return AppendRange(mesh_.group_triangles(), begin, end, *out.mutable_group_triangles());
+      case MeshField::kGroupQuads:
+        return AppendRange(mesh_.group_quads(), begin, end, *out.mutable_group_quads());
+      case MeshField::kTriangleGroups:
+        return AppendRange(mesh_.triangle_groups(), begin, end, *out.mutable_triangle_groups());
+      case MeshField::kQuadGroups:
+        return AppendRange(mesh_.quad_groups(), begin, end, *out.mutable_quad_groups());
       default:
         return AppendRange(Connectivity(mesh_, GroupOf(field)), begin, end,
                            *MutableConnectivity(out, GroupOf(field)));
@@ -123,6 +147,11 @@ class EngineMeshSource final : public WireMeshSource {
         return coordinates_only_ ? 0 : static_cast<std::int64_t>(ids_.fixed_nodes.size());
       case MeshField::kElementIds:
         return coordinates_only_ ? 0 : static_cast<std::int64_t>(ids_.element_ids.size());
+      case MeshField::kGroupTriangles:
+      case MeshField::kGroupQuads:
+      case MeshField::kTriangleGroups:
+      case MeshField::kQuadGroups:
+        return 0;  // a result does not repeat the caller's surface groups
       default:
         if (coordinates_only_) return 0;
         return static_cast<std::int64_t>(
@@ -148,6 +177,11 @@ class EngineMeshSource final : public WireMeshSource {
         return AppendRange(ids_.fixed_nodes, begin, end, *out.mutable_fixed_nodes());
       case MeshField::kElementIds:
         return AppendRange(ids_.element_ids, begin, end, *out.mutable_element_ids());
+      case MeshField::kGroupTriangles:
+      case MeshField::kGroupQuads:
+      case MeshField::kTriangleGroups:
+      case MeshField::kQuadGroups:
+        return;
       default: {
         const ElementType type = kWireElementGroups[GroupOf(field)].type;
         const std::vector<NodeId>& nodes = mesh_.block(type).nodes;

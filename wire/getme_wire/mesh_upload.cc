@@ -106,6 +106,7 @@ class MeshUpload::EngineTarget final : public AssemblyTarget {
   void AddElementIds(std::span<const std::uint64_t> ids) override {
     ids_.element_ids.insert(ids_.element_ids.end(), ids.begin(), ids.end());
   }
+  void AddSurfaceGroups(const v1::Mesh& part) override { surface_groups_.Append(part); }
 
   absl::StatusOr<UploadedMesh> Build() && {
     const std::int64_t nodes = builder_.node_count();
@@ -126,12 +127,16 @@ class MeshUpload::EngineTarget final : public AssemblyTarget {
     builder_.SetErrorNames(&names);
     absl::StatusOr<Mesh> mesh = std::move(builder_).Build();
     if (!mesh.ok()) return mesh.status();
-    return UploadedMesh{*std::move(mesh), std::move(ids_)};
+    absl::StatusOr<std::vector<surface::GroupedFace>> groups =
+        ToSurfaceGroups(surface_groups_, nodes);
+    if (!groups.ok()) return groups.status();
+    return UploadedMesh{*std::move(mesh), std::move(ids_), *std::move(groups)};
   }
 
  private:
   MeshBuilder builder_;
   WireMeshIds ids_;
+  WireSurfaceGroups surface_groups_;
   std::array<std::int64_t, kWireElementGroupCount> group_counts_{};
 };
 

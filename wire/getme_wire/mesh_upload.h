@@ -11,6 +11,7 @@
 #include "getme/v1/smoother.pb.h"
 #include "getme_wire/mesh_assembler.h"
 #include "getme_wire/mesh_ids.h"
+#include "getme_wire/surface_groups.h"
 
 namespace getme::wire {
 
@@ -19,6 +20,8 @@ namespace getme::wire {
 struct UploadedMesh {
   Mesh mesh;
   WireMeshIds ids;
+  // The caller's tagged boundary faces as surface groups (surface_groups.h); empty if none.
+  std::vector<surface::GroupedFace> surface_groups;
 };
 
 // Streams an upload's chunks straight into the engine's MeshBuilder: nodes and elements are

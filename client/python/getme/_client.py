@@ -11,7 +11,7 @@ import grpc
 from getme import _chunks, _mesh, _params
 from getme._errors import Error, from_rpc_error
 from getme._report import ProgressEvent, QualityReport, SmoothReport
-from getme._stubs import smoother_pb2, smoother_pb2_grpc
+from getme._stubs import params_pb2, smoother_pb2, smoother_pb2_grpc
 
 DEFAULT_SERVER = "localhost:50051"
 
@@ -122,6 +122,9 @@ def smooth(mesh, server=DEFAULT_SERVER, *,
       boundary name is a ValueError naming the keyword; a value the server refuses (an angle
       outside [0, 180], free_boundary=True with boundary="slide", ...) an INVALID_ARGUMENT
       getme.Error naming the fields. The report's boundary_slide and layers say what they did.
+      With boundary="slide", triangles and quads that the mesh's cell_data tags (gmsh:physical,
+      else medit:ref) are sent as surface groups: a node never leaves its group, and group
+      borders are feature curves, as with the CLI.
 
     Returns the smoothed mesh as the same kind as the input (a meshio.Mesh, a deep copy with the
     new points, for a meshio.Mesh; a tuple or dict sharing the input's cells for a tuple or
@@ -134,7 +137,9 @@ def smooth(mesh, server=DEFAULT_SERVER, *,
     """
     parameters = _params.to_proto(params)
     _check_bins(bins)
-    parsed = _mesh.parse(mesh, fixed)
+    # A sliding boundary keeps its nodes in the input's surface groups: the tagged faces go along.
+    parsed = _mesh.parse(mesh, fixed,
+                         surface_groups=parameters.boundary == params_pb2.BOUNDARY_SLIDE)
     header = smoother_pb2.SmoothHeader(
         parameters=parameters,
         result_options=smoother_pb2.ResultOptions(coordinates_only=True, histogram_bins=bins),

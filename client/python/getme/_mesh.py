@@ -19,7 +19,8 @@ from typing import Callable, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from getme._wire import ELEMENT_GROUPS, GROUP_BY_MESHIO, NODE_INDEX_MAX, PASSTHROUGH_CELLS
+from getme._wire import (ELEMENT_GROUPS, GROUP_BY_MESHIO, NODE_INDEX_MAX, PASSTHROUGH_CELLS,
+                         SURFACE_TAG_ARRAYS)
 
 
 @dataclasses.dataclass
@@ -34,6 +35,12 @@ class WireMesh:
     pyramids: np.ndarray
     fixed_nodes: np.ndarray
     element_ids: Optional[np.ndarray]
+    # Surface groups of a sliding boundary (mesh.proto): tagged triangles and quads, flat, and
+    # one tag per face; None when not sent.
+    group_triangles: Optional[np.ndarray] = None
+    group_quads: Optional[np.ndarray] = None
+    triangle_groups: Optional[np.ndarray] = None
+    quad_groups: Optional[np.ndarray] = None
 
     @property
     def nodes(self) -> int:
@@ -172,11 +179,46 @@ def to_wire(points, cells, point_data=None, fixed=None, with_fixed: bool = True)
                     **{field: joined(parts) for field, parts in per_field.items()})
 
 
-def parse(mesh, fixed=None, with_fixed: bool = True) -> MeshInput:
+def add_surface_groups(wire: WireMesh, cells, cell_data) -> None:
+    """Sets the wire's surface groups from the triangle and quad blocks that cell_data tags
+    (SURFACE_TAG_ARRAYS: gmsh:physical, else medit:ref; one array per cell block, as meshio keeps
+    them). Faces tagged 0 carry no group and are not sent, as the CLI does."""
+    if not cell_data:
+        return
+    name = next((name for name in SURFACE_TAG_ARRAYS if name in cell_data), None)
+    if name is None:
+        return
+    per_size = {3: ([], []), 4: ([], [])}
+    for index, ((cell_type, data), tags) in enumerate(zip(_blocks(cells), cell_data[name])):
+        size = {"triangle": 3, "quad": 4}.get(cell_type)
+        if size is None:
+            continue
+        faces = _node_indices(f"cell block {index} ({cell_type})", data, size)
+        tags = np.asarray(tags)
+        if tags.shape != (len(faces),) or tags.dtype.kind not in "iu":
+            raise ValueError(f"cell_data[{name!r}] of cell block {index} ({cell_type}): expected "
+                             f"{len(faces)} integer tags, got shape {tags.shape}, "
+                             f"dtype {tags.dtype}")
+        tagged = tags != 0
+        if np.any(tags[tagged] < 0) or np.any(tags[tagged] > NODE_INDEX_MAX):
+            raise ValueError(f"cell_data[{name!r}] of cell block {index} ({cell_type}): surface "
+                             f"group tags must be from 1 to {NODE_INDEX_MAX}")
+        per_size[size][0].append(faces[tagged].reshape(-1))
+        per_size[size][1].append(tags[tagged].astype(np.int64))
+
+    def joined(parts):
+        return np.concatenate(parts) if parts else np.zeros(0, dtype=np.int64)
+
+    wire.group_triangles, wire.triangle_groups = joined(per_size[3][0]), joined(per_size[3][1])
+    wire.group_quads, wire.quad_groups = joined(per_size[4][0]), joined(per_size[4][1])
+
+
+def parse(mesh, fixed=None, with_fixed: bool = True, surface_groups: bool = False) -> MeshInput:
     """The wire mesh of `mesh`: a meshio.Mesh (or any object with points, cells as meshio cell
     blocks and point_data), a (points, cells[, point_data]) tuple, a dict with those keys, or an
     object with those attributes whose cells is a dict of numpy arrays. Without with_fixed, fixed
-    nodes are neither read nor sent."""
+    nodes are neither read nor sent. With surface_groups, the triangles and quads that the
+    cell_data tags (a meshio.Mesh's, or a dict's "cell_data") are sent as surface groups."""
     if isinstance(mesh, tuple):
         if len(mesh) not in (2, 3):
             raise TypeError(f"a mesh tuple is (points, cells) or (points, cells, point_data), got "
@@ -188,10 +230,14 @@ def parse(mesh, fixed=None, with_fixed: bool = True) -> MeshInput:
         if "points" not in mesh or "cells" not in mesh:
             raise TypeError("a mesh dict needs the keys 'points' and 'cells'")
         wire = to_wire(mesh["points"], mesh["cells"], mesh.get("point_data"), fixed, with_fixed)
+        if surface_groups:
+            add_surface_groups(wire, mesh["cells"], mesh.get("cell_data"))
         return MeshInput(wire, lambda points: {**mesh, "points": points})
     if hasattr(mesh, "points") and hasattr(mesh, "cells"):
         wire = to_wire(mesh.points, mesh.cells, getattr(mesh, "point_data", None), fixed,
                        with_fixed)
+        if surface_groups:
+            add_surface_groups(wire, mesh.cells, getattr(mesh, "cell_data", None))
 
         # A deep copy (cells, cell_data, point_data, field_data, sets: the result does not share
         # them with the input), with the new points in place of the old ones.
@@ -203,4 +249,4 @@ def parse(mesh, fixed=None, with_fixed: bool = True) -> MeshInput:
                     f"points and cells, got {type(mesh).__name__}")
 
 
-__all__ = ["WireMesh", "MeshInput", "parse", "to_wire"]
+__all__ = ["WireMesh", "MeshInput", "add_surface_groups", "parse", "to_wire"]

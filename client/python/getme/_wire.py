@@ -70,7 +70,14 @@ CHUNK_FIELDS = (
     ChunkField("fixed_nodes", 1, 5),
     ChunkField("node_ids", 1, 10),
     ChunkField("element_ids", 1, 10),
+    ChunkField("group_triangles", 3, 5),
+    ChunkField("group_quads", 4, 5),
+    ChunkField("triangle_groups", 1, 5),
+    ChunkField("quad_groups", 1, 5),
 )
+# Cell data that tags triangles and quads with their surface group, first found first: gmsh's
+# physical groups, MEDIT's references (as `getme smooth` reads them, formats::TaggedSurfaceFaces).
+SURFACE_TAG_ARRAYS = ("gmsh:physical", "medit:ref")
 # About 1 MB per chunk (kDefaultChunkBytes, wire/getme_wire/mesh_chunker.h), far below gRPC's
 # 4 MB message limit; a smaller budget is raised to MIN_CHUNK_BYTES.
 DEFAULT_CHUNK_BYTES = 1 << 20
@@ -168,7 +175,8 @@ def boundary_name(value: int) -> str:
 
 __all__ = [
     "PRISM_PERMUTATION", "ElementGroup", "ELEMENT_GROUPS", "GROUP_BY_MESHIO", "PASSTHROUGH_CELLS",
-    "NODE_INDEX_MAX", "PER_TYPE_KEYS", "ChunkField", "CHUNK_FIELDS", "DEFAULT_CHUNK_BYTES",
+    "NODE_INDEX_MAX", "PER_TYPE_KEYS", "ChunkField", "CHUNK_FIELDS", "SURFACE_TAG_ARRAYS",
+    "DEFAULT_CHUNK_BYTES",
     "MIN_CHUNK_BYTES", "IterationCounter", "ITERATION_COUNTERS", "PARAMETER_ALIASES", "LAYER_ENDS",
     "phase_name", "method_value", "method_names", "is_method", "boundary_value", "boundary_names",
     "boundary_name",
