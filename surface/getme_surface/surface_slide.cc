@@ -18,6 +18,7 @@ absl::StatusOr<std::unique_ptr<SurfaceSlide>> SurfaceSlide::Build(const Mesh& me
   if (options.keep_layers) walls = std::make_unique<WallDistance>(mesh, layers);
   std::unique_ptr<SurfaceSlide> slide(new SurfaceSlide(
       options, *std::move(surface), *std::move(projector), std::move(layers), std::move(walls)));
+  slide->IndexNeighbourhoods(mesh.node_count());
   if (!options.keep_layers) return slide;
   slide->kept_ = DescribeKeptLayers(mesh, slide->layers_, *slide->walls_);
   for (const NodeId node : slide->kept_.nodes) {
@@ -27,11 +28,67 @@ absl::StatusOr<std::unique_ptr<SurfaceSlide>> SurfaceSlide::Build(const Mesh& me
   return slide;
 }
 
+void SurfaceSlide::IndexNeighbourhoods(std::int64_t node_count) {
+  std::vector<std::vector<std::int64_t>> lists(static_cast<std::size_t>(node_count));
+  for (std::size_t f = 0; f < surface_.faces.size(); ++f) {
+    const BoundaryFace& face = surface_.faces[f];
+    for (int k = 0; k < face.size; ++k) {
+      if (surface_.kind[face.nodes[k]] == BoundaryNodeKind::kSurface) {
+        lists[face.nodes[k]].push_back(static_cast<std::int64_t>(f));
+      }
+    }
+  }
+  for (std::size_t e = 0; e < surface_.feature_edges.size(); ++e) {
+    const auto [a, b] = surface_.feature_edges[e];
+    if (surface_.kind[a] == BoundaryNodeKind::kFeature) lists[a].push_back(b);
+    if (surface_.kind[b] == BoundaryNodeKind::kFeature) lists[b].push_back(a);
+  }
+  neighbourhood_offsets_.assign(1, 0);
+  for (const auto& list : lists) {
+    neighbourhood_.insert(neighbourhood_.end(), list.begin(), list.end());
+    neighbourhood_offsets_.push_back(static_cast<std::int64_t>(neighbourhood_.size()));
+  }
+}
+
 bool SurfaceSlide::Slides(NodeId node) const {
   const BoundaryNodeKind kind = surface_.kind[node];
   if (kind != BoundaryNodeKind::kSurface && kind != BoundaryNodeKind::kFeature) return false;
   // A column's boundary node moves with its column or not at all (the class comment).
   return options_.keep_layers || layers_.level[node] < 0;
+}
+
+int SurfaceSlide::TangentSpace(const Mesh& mesh, NodeId node, double scale,
+                               std::array<Vec3, 2>& basis) const {
+  const auto at = [&](std::int64_t n) { return Vec3(mesh.x()[n], mesh.y()[n], mesh.z()[n]); };
+  const std::int64_t begin = neighbourhood_offsets_[node];
+  const std::int64_t end = neighbourhood_offsets_[node + 1];
+  if (surface_.kind[node] == BoundaryNodeKind::kFeature && end - begin == 2) {
+    const Vec3 chord = at(neighbourhood_[begin + 1]) - at(neighbourhood_[begin]);
+    if (chord.norm() > 0.0) {
+      basis[0] = chord.normalized();
+      return 1;
+    }
+  } else if (surface_.kind[node] == BoundaryNodeKind::kSurface && end > begin) {
+    Vec3 normal = Vec3::Zero();
+    for (std::int64_t k = begin; k < end; ++k) {
+      const BoundaryFace& face = surface_.faces[neighbourhood_[k]];
+      const Vec3 a = at(face.nodes[0]), b = at(face.nodes[1]), c = at(face.nodes[2]);
+      // A quad's area vector is half the cross product of its diagonals.
+      normal += face.size == 4 ? (c - a).cross(at(face.nodes[3]) - b) : (b - a).cross(c - a);
+    }
+    if (normal.norm() > 0.0) {
+      normal.normalize();
+      // Any unit vector in the plane, then the one across it.
+      int axis = 0;
+      for (int k = 1; k < 3; ++k) {
+        if (std::abs(normal[k]) < std::abs(normal[axis])) axis = k;
+      }
+      basis[0] = normal.cross(Vec3::Unit(axis)).normalized();
+      basis[1] = normal.cross(basis[0]);
+      return 2;
+    }
+  }
+  return BoundarySlide::TangentSpace(mesh, node, scale, basis);
 }
 
 Vec3 SurfaceSlide::Project(NodeId node, const Vec3& point, const Vec3* near) const {

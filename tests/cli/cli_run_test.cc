@@ -355,8 +355,12 @@ TEST(CliSmooth, PhysicalGroupsOfTheFileKeepTheirNodes) {
         for (int i = 0; i <= 4; ++i) {
           const std::int64_t node = i + 5 * (j + 5 * 4);
           const double x = points.AsDouble(3 * node);
-          if (i < 2) EXPECT_LE(x, 2.0) << "node " << node;
-          if (i > 2) EXPECT_GE(x, 2.0) << "node " << node;
+          if (i < 2) {
+            EXPECT_LE(x, 2.0) << "node " << node;
+          }
+          if (i > 2) {
+            EXPECT_GE(x, 2.0) << "node " << node;
+          }
         }
       }
     }

@@ -142,12 +142,20 @@ TEST(KeptLayersTest, ASlidingWallKeepsItsPlaneAndTheColumnsTheirHeights) {
     if (!input.is_boundary(node)) continue;
     // Wall and top nodes stay in their planes, side nodes on theirs; the block's 8 corners stay.
     const int level = node / kPerLevel;
-    if (level == 0) EXPECT_NEAR(slid.mesh.z()[node], 0.0, 1e-12) << "node " << node;
-    if (level == kLayers) EXPECT_NEAR(slid.mesh.z()[node], top, 1e-12) << "node " << node;
+    if (level == 0) {
+      EXPECT_NEAR(slid.mesh.z()[node], 0.0, 1e-12) << "node " << node;
+    }
+    if (level == kLayers) {
+      EXPECT_NEAR(slid.mesh.z()[node], top, 1e-12) << "node " << node;
+    }
     const int i = node % (kCells + 1);
     const int j = (node / (kCells + 1)) % (kCells + 1);
-    if (i == 0 || i == kCells) EXPECT_NEAR(slid.mesh.x()[node], input.x()[node], 1e-12);
-    if (j == 0 || j == kCells) EXPECT_NEAR(slid.mesh.y()[node], input.y()[node], 1e-12);
+    if (i == 0 || i == kCells) {
+      EXPECT_NEAR(slid.mesh.x()[node], input.x()[node], 1e-12);
+    }
+    if (j == 0 || j == kCells) {
+      EXPECT_NEAR(slid.mesh.y()[node], input.y()[node], 1e-12);
+    }
     const bool corner =
         (i == 0 || i == kCells) && (j == 0 || j == kCells) && (level == 0 || level == kLayers);
     if (corner) {

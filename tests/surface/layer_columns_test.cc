@@ -38,7 +38,9 @@ TEST(LayerColumnsTest, AHexahedralLayerBlockIsOneColumnPerWallFaceThroughItsHeig
   for (NodeId node = 0; node < mesh.node_count(); ++node) {
     const int k = node / kPerLevel;
     EXPECT_EQ(columns.level[node], k) << "node " << node;
-    if (k > 0) EXPECT_EQ(columns.below[node], node - kPerLevel) << "node " << node;
+    if (k > 0) {
+      EXPECT_EQ(columns.below[node], node - kPerLevel) << "node " << node;
+    }
   }
   // The wall is z = 0, where every wall face lies.
   for (const auto& face : columns.wall_faces) {

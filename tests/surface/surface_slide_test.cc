@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -325,6 +326,49 @@ TEST(SurfaceSlideTest, SlidingNeverEndsBelowTheHeldBoundaryOnPinnedThinLayers) {
     EXPECT_EQ(slid->phases[4].q_min, slid->after.q_min);
     EXPECT_EQ(slid->after.invalid, 0);
   }
+}
+
+// The tangent spaces the polish restricts a sliding node's Newton step to (issue 15): read from the
+// node's boundary faces at their current corners, they span what the interface's default reads
+// off three projections, and on a displaced cube they are the cube's faces and edges exactly.
+TEST(SurfaceSlideTest, TangentSpacesAreTheFacesAndEdgesTheNodesSlideOn) {
+  const Mesh cube = DisplacedCube(5);
+  absl::StatusOr<std::unique_ptr<SurfaceSlide>> slide = SurfaceSlide::Build(cube);
+  ASSERT_TRUE(slide.ok()) << slide.status();
+  const auto projector = [](const std::array<Vec3, 2>& basis, int count) {
+    Eigen::Matrix3d p = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < count; ++k) p += basis[k] * basis[k].transpose();
+    return p;
+  };
+  int checked[3] = {0, 0, 0};
+  for (NodeId node = 0; node < cube.node_count(); ++node) {
+    if (!(*slide)->Slides(node)) continue;
+    std::array<Vec3, 2> basis, reference;
+    const int count = (*slide)->TangentSpace(cube, node, 0.5, basis);
+    const int reference_count = (*slide)->BoundarySlide::TangentSpace(cube, node, 0.5, reference);
+    // One coordinate on the cube's bounds: a face (two directions); two: an edge (one).
+    const int bounds = BoundCount(cube, node);
+    ASSERT_EQ(count, 3 - bounds) << "node " << node;
+    ASSERT_EQ(reference_count, count) << "node " << node;
+    for (int k = 0; k < count; ++k) {
+      EXPECT_NEAR(basis[k].norm(), 1.0, 1e-12);
+      for (int axis = 0; axis < 3; ++axis) {
+        const double c = axis == 0 ? cube.x()[node] : axis == 1 ? cube.y()[node] : cube.z()[node];
+        // No component across a bound the node lies on.
+        if (OnBound(c)) {
+          EXPECT_NEAR(basis[k][axis], 0.0, 1e-12) << "node " << node;
+        }
+      }
+    }
+    if (count == 2) {
+      EXPECT_NEAR(basis[0].dot(basis[1]), 0.0, 1e-12);
+    }
+    EXPECT_LE((projector(basis, count) - projector(reference, count)).norm(), 1e-6)
+        << "node " << node;
+    ++checked[count];
+  }
+  EXPECT_GT(checked[1], 0);
+  EXPECT_GT(checked[2], 0);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "getme/smoothing/polish.h"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -150,14 +150,13 @@ bool EvaluateTrial(const Mesh& mesh, NodeId node, PolishState& state, double& co
 }
 
 // A sliding node moves within its surface, or along its feature curve: its Newton step is the
-// one of the cost restricted to that tangent space. The free 3-D step, projected afterwards,
-// loses its normal part and with it the Hessian's coupling to the normal: measured on
-// the pinned thin-layer arteries, the sliding polish then ended below the held one on three of
-// eight (docs/boundary.md#when-nodes-slide).
-// The tangent space is read off the projection itself: small moves along the three axes, put
-// back onto the surface, span it (two directions on a face, one on a curve, none at a corner).
-// Replaces `g` and `h` by their restriction Bᵀg, BᵀhB written back in the basis B (a projector
-// P = BBᵀ: g ← Pg, h ← PhP + (I − P)), so the caller's Newton solve gives a tangential step.
+// one of the cost restricted to that tangent space (BoundarySlide::TangentSpace). The free 3-D
+// step, projected afterwards, loses its normal part and with it the Hessian's coupling to the
+// normal: measured on the pinned thin-layer arteries, the sliding polish then ended below the
+// held one on three of eight (docs/boundary.md#when-nodes-slide).
+// Replaces `g` and `h` by their restrictions to the tangent space written back in 3-D (with
+// P = BBᵀ, B the tangent basis: g ← Pg, h ← PhP + (I − P)), so the caller's Newton solve gives a
+// tangential step.
 void RestrictToTangent(const SmoothingContext& context, NodeId node, const Vec3& at, Vec3& g,
                        Eigen::Matrix3d& h) {
   const Mesh& mesh = context.mesh;
@@ -169,21 +168,10 @@ void RestrictToTangent(const SmoothingContext& context, NodeId node, const Vec3&
       nearest2 = std::min(nearest2, (p - at).squaredNorm());
     }
   }
-  const double epsilon = 1e-4 * std::sqrt(nearest2);
-  Eigen::Matrix3d moves;
-  for (int k = 0; k < 3; ++k) {
-    Vec3 trial = at;
-    trial[k] += epsilon;
-    moves.col(k) = (context.Placed(node, trial, at) - at) / epsilon;
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> spans(moves * moves.transpose());
+  std::array<Vec3, 2> basis;
+  const int count = context.slide->TangentSpace(mesh, node, std::sqrt(nearest2), basis);
   Eigen::Matrix3d projector = Eigen::Matrix3d::Zero();
-  for (int k = 0; k < 3; ++k) {
-    if (spans.eigenvalues()[k] > 0.25) {
-      const Vec3 direction = spans.eigenvectors().col(k);
-      projector += direction * direction.transpose();
-    }
-  }
+  for (int k = 0; k < count; ++k) projector += basis[k] * basis[k].transpose();
   g = projector * g;
   h = projector * h * projector + (Eigen::Matrix3d::Identity() - projector);
 }
