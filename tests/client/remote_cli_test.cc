@@ -74,6 +74,22 @@ class RemoteCliTest : public ::testing::Test {
     if (server_) server_->Shutdown(absl::Seconds(1));
   }
 
+  // `getme smooth input output options...` locally into local_out, then with --server into
+  // remote_out.
+  struct LocalAndRemote {
+    RunResult local;
+    RunResult remote;
+  };
+  LocalAndRemote SmoothBothWays(const std::string& input, const std::string& local_out,
+                                const std::string& remote_out,
+                                const std::vector<std::string>& options) const {
+    std::vector<std::string> local_args = {"smooth", input, local_out};
+    local_args.insert(local_args.end(), options.begin(), options.end());
+    std::vector<std::string> remote_args = {"smooth", input, remote_out, "--server", target_};
+    remote_args.insert(remote_args.end(), options.begin(), options.end());
+    return {RunGetme(local_args), RunGetme(remote_args)};
+  }
+
   std::unique_ptr<server::SmootherServer> server_;
   std::string target_;
 };
@@ -85,15 +101,9 @@ TEST_F(RemoteCliTest, RemoteSmoothOfGmshFileWithGroupsMatchesLocal) {
   const std::string input = std::string(GETME_GROUPED_HYBRID_DIR) + "/hybrid-groups.msh";
   const std::string local_out = TempPath("local.msh");
   const std::string remote_out = TempPath("remote.msh");
-  const std::vector<std::string> options = {"--free-boundary", "--fix-physical", "inlet",
-                                            "--quiet"};
-  std::vector<std::string> local_args = {"smooth", input, local_out};
-  local_args.insert(local_args.end(), options.begin(), options.end());
-  const RunResult local = RunGetme(local_args);
+  const auto [local, remote] = SmoothBothWays(
+      input, local_out, remote_out, {"--free-boundary", "--fix-physical", "inlet", "--quiet"});
   ASSERT_EQ(local.exit_status, 0) << local.err;
-  std::vector<std::string> remote_args = {"smooth", input, remote_out, "--server", target_};
-  remote_args.insert(remote_args.end(), options.begin(), options.end());
-  const RunResult remote = RunGetme(remote_args);
   ASSERT_EQ(remote.exit_status, 0) << remote.err;
   const std::string local_bytes = ReadFile(local_out);
   EXPECT_GT(local_bytes.size(), 1000u);
@@ -109,15 +119,9 @@ TEST_F(RemoteCliTest, SlidingOnAFileWithPhysicalGroupsKeepsTheGroupsRemotely) {
   const std::string input = std::string(GETME_GROUPED_HYBRID_DIR) + "/hybrid-groups.msh";
   const std::string local_out = TempPath("local.msh");
   const std::string remote_out = TempPath("remote.msh");
-  const std::vector<std::string> options = {"--boundary", "slide",     "--json",
-                                            "--quiet",    "--threads", "1"};
-  std::vector<std::string> local_args = {"smooth", input, local_out};
-  local_args.insert(local_args.end(), options.begin(), options.end());
-  const RunResult local = RunGetme(local_args);
+  const auto [local, remote] = SmoothBothWays(
+      input, local_out, remote_out, {"--boundary", "slide", "--json", "--quiet", "--threads", "1"});
   ASSERT_EQ(local.exit_status, 0) << local.err;
-  std::vector<std::string> remote_args = {"smooth", input, remote_out, "--server", target_};
-  remote_args.insert(remote_args.end(), options.begin(), options.end());
-  const RunResult remote = RunGetme(remote_args);
   ASSERT_EQ(remote.exit_status, 0) << remote.err;
   const JsonValue local_result = JsonLines(local.out).back();
   const JsonValue remote_result = JsonLines(remote.out).back();

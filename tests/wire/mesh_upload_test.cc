@@ -84,23 +84,31 @@ TEST(MeshUpload, CoordinatesOnlyResultsCarryNoTopology) {
   EXPECT_EQ(collected.mesh().element_ids_size(), 0);
 }
 
+// Sends every value of `values` in a part of its own, into `field` (a v1::Mesh mutable_ getter).
+template <typename Field, typename Values>
+void SendOneByOne(MeshUpload& upload, Field field, const Values& values) {
+  for (const auto value : values) {
+    v1::Mesh part;
+    (part.*field)()->Add(value);
+    ASSERT_TRUE(upload.Add(part).ok());
+  }
+}
+
+// The hybrid block's nodes and elements, every value in a part of its own, hexahedra before
+// tetrahedra, pyramids before wedges.
+void SendHybridOneByOne(MeshUpload& upload, const v1::Mesh& whole) {
+  SendOneByOne(upload, &v1::Mesh::mutable_coordinates, whole.coordinates());
+  SendOneByOne(upload, &v1::Mesh::mutable_hexahedra, whole.hexahedra());
+  SendOneByOne(upload, &v1::Mesh::mutable_tetrahedra, whole.tetrahedra());
+  SendOneByOne(upload, &v1::Mesh::mutable_pyramids, whole.pyramids());
+  SendOneByOne(upload, &v1::Mesh::mutable_wedges, whole.wedges());
+}
+
 TEST(MeshUpload, SplitNodesAndElementsAndInterleavedTypesKeepTheWireNumbering) {
   const v1::Mesh whole = ToWireMesh(Hybrid());
-  // Every value in a part of its own, hexahedra before tetrahedra, pyramids before wedges.
   MeshUpload upload(1'000'000);
-  auto send = [&](auto field, const auto& values) {
-    for (const auto value : values) {
-      v1::Mesh part;
-      (part.*field)()->Add(value);
-      ASSERT_TRUE(upload.Add(part).ok());
-    }
-  };
-  send(&v1::Mesh::mutable_coordinates, whole.coordinates());
-  send(&v1::Mesh::mutable_hexahedra, whole.hexahedra());
-  send(&v1::Mesh::mutable_tetrahedra, whole.tetrahedra());
-  send(&v1::Mesh::mutable_pyramids, whole.pyramids());
-  send(&v1::Mesh::mutable_wedges, whole.wedges());
-  send(&v1::Mesh::mutable_fixed_nodes, whole.fixed_nodes());
+  SendHybridOneByOne(upload, whole);
+  SendOneByOne(upload, &v1::Mesh::mutable_fixed_nodes, whole.fixed_nodes());
   absl::StatusOr<UploadedMesh> back = std::move(upload).Finish();
   ASSERT_TRUE(back.ok()) << back.status();
   EXPECT_EQ(ElementsInWireOrder(ToWireMesh(back->mesh)), ElementsInWireOrder(whole));
@@ -113,24 +121,13 @@ TEST(MeshUpload, SplitNodesAndElementsAndInterleavedTypesKeepTheWireNumbering) {
 TEST(MeshUpload, SurfaceGroupTagsBecomeDenseGroupsTrianglesFirst) {
   // Tags 40, 7, 40 on triangles and 9 on a quad: groups in ascending tag order from 1 (7 → 1,
   // 9 → 2, 40 → 3), group 0 left to the faces not listed; every value sent in a part of its own.
-  const v1::Mesh whole = ToWireMesh(Hybrid());
   MeshUpload upload(1'000'000);
-  auto send = [&](auto field, const auto& values) {
-    for (const auto value : values) {
-      v1::Mesh part;
-      (part.*field)()->Add(value);
-      ASSERT_TRUE(upload.Add(part).ok());
-    }
-  };
-  send(&v1::Mesh::mutable_coordinates, whole.coordinates());
-  send(&v1::Mesh::mutable_hexahedra, whole.hexahedra());
-  send(&v1::Mesh::mutable_tetrahedra, whole.tetrahedra());
-  send(&v1::Mesh::mutable_pyramids, whole.pyramids());
-  send(&v1::Mesh::mutable_wedges, whole.wedges());
-  send(&v1::Mesh::mutable_quad_groups, std::vector<std::uint32_t>{9});
-  send(&v1::Mesh::mutable_group_quads, std::vector<std::uint32_t>{4, 5, 6, 7});
-  send(&v1::Mesh::mutable_group_triangles, std::vector<std::uint32_t>{0, 1, 2, 1, 2, 3, 2, 3, 0});
-  send(&v1::Mesh::mutable_triangle_groups, std::vector<std::uint32_t>{40, 7, 40});
+  SendHybridOneByOne(upload, ToWireMesh(Hybrid()));
+  SendOneByOne(upload, &v1::Mesh::mutable_quad_groups, std::vector<std::uint32_t>{9});
+  SendOneByOne(upload, &v1::Mesh::mutable_group_quads, std::vector<std::uint32_t>{4, 5, 6, 7});
+  SendOneByOne(upload, &v1::Mesh::mutable_group_triangles,
+               std::vector<std::uint32_t>{0, 1, 2, 1, 2, 3, 2, 3, 0});
+  SendOneByOne(upload, &v1::Mesh::mutable_triangle_groups, std::vector<std::uint32_t>{40, 7, 40});
   absl::StatusOr<UploadedMesh> back = std::move(upload).Finish();
   ASSERT_TRUE(back.ok()) << back.status();
   ASSERT_EQ(back->surface_groups.size(), 4u);
