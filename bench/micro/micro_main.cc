@@ -12,6 +12,7 @@
 namespace getme::bench {
 void RegisterSimultaneousIterationBenchmarks();
 void RegisterEngineMemoryBenchmarks();
+void RegisterFileIoBenchmarks();
 }  // namespace getme::bench
 
 int main(int argc, char** argv) {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   int remaining_count = static_cast<int>(remaining.size());
   getme::bench::RegisterSimultaneousIterationBenchmarks();
   getme::bench::RegisterEngineMemoryBenchmarks();
+  getme::bench::RegisterFileIoBenchmarks();
   benchmark::Initialize(&remaining_count, remaining.data());
   if (benchmark::ReportUnrecognizedArguments(remaining_count, remaining.data())) return 1;
   benchmark::RunSpecifiedBenchmarks();

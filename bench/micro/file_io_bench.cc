@@ -1,0 +1,126 @@
+// Readers and writers of large mesh files (issue 16, item 4: "reading and writing a 10M-element
+// mesh must not dominate the run"): MB/s of each binary format's writer and reader on the
+// distorted hybrid block of the other benchmarks, at every size of BenchmarkSizes(). The writer
+// is SerializeMeshDocument and the atomic file write; the reader is the file read and
+// ParseMeshDocument, which is what `getme smooth` does with its input. The file goes to the
+// temporary directory and is removed afterwards; bytes_per_second counts the file's bytes.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "bench_meshes.h"
+#include "formats/file_io.h"
+#include "formats/grid_mesh.h"
+#include "formats/mesh_file.h"
+
+namespace getme::bench {
+namespace {
+
+struct BinaryFormat {
+  const char* name;
+  const char* extension;
+  formats::FileFormat format;
+  formats::WriteOptions options;
+};
+
+const BinaryFormat kFormats[] = {
+    {"vtu",
+     ".vtu",
+     formats::FileFormat::kVtkXml,
+     {formats::Encoding::kBinary, formats::GmshVersion::k41, formats::VtuLayout::kAppended, false}},
+    {"msh41",
+     ".msh",
+     formats::FileFormat::kGmsh,
+     {formats::Encoding::kBinary, formats::GmshVersion::k41, formats::VtuLayout::kAppended, false}},
+    {"vtk",
+     ".vtk",
+     formats::FileFormat::kVtkLegacy,
+     {formats::Encoding::kBinary, formats::GmshVersion::k41, formats::VtuLayout::kAppended, false}},
+};
+
+formats::MeshDocument DocumentOf(const Mesh& mesh, const BinaryFormat& format) {
+  formats::MeshDocument document;
+  document.format = format.format;
+  document.as_read = format.options;
+  document.grid = formats::GridFromMesh(mesh, "hybrid block");
+  return document;
+}
+
+std::string TempFile(const BinaryFormat& format) {
+  return (std::filesystem::temp_directory_path() /
+          (std::string("getme_file_io_bench") + format.extension))
+      .string();
+}
+
+void BM_Write(benchmark::State& state, const BinaryFormat* format) {
+  const formats::MeshDocument document = DocumentOf(HybridMeshNear(state.range(0)), *format);
+  const std::string path = TempFile(*format);
+  std::int64_t bytes = 0;
+  for (auto _ : state) {
+    absl::StatusOr<std::string> serialized =
+        formats::SerializeMeshDocument(document, format->format, format->options);
+    if (!serialized.ok() || !formats::WriteFileAtomically(path, *serialized).ok()) {
+      state.SkipWithError("write failed");
+      break;
+    }
+    bytes = static_cast<std::int64_t>(serialized->size());
+  }
+  std::filesystem::remove(path);
+  state.SetBytesProcessed(bytes * state.iterations());
+  state.counters["elements"] = static_cast<double>(state.range(0));
+  state.counters["file_MB"] = static_cast<double>(bytes) / 1e6;
+}
+
+void BM_Read(benchmark::State& state, const BinaryFormat* format) {
+  const std::string path = TempFile(*format);
+  {
+    const formats::MeshDocument document = DocumentOf(HybridMeshNear(state.range(0)), *format);
+    absl::StatusOr<std::string> serialized =
+        formats::SerializeMeshDocument(document, format->format, format->options);
+    if (!serialized.ok() || !formats::WriteFileAtomically(path, *serialized).ok()) {
+      state.SkipWithError("could not write the file to read");
+      return;
+    }
+  }
+  std::int64_t bytes = 0;
+  for (auto _ : state) {
+    absl::StatusOr<std::string> file = formats::ReadFileBytes(path);
+    absl::StatusOr<formats::MeshDocument> document =
+        file.ok() ? formats::ParseMeshDocument(*file, format->format)
+                  : absl::StatusOr<formats::MeshDocument>(file.status());
+    if (!document.ok()) {
+      state.SkipWithError("read failed");
+      break;
+    }
+    bytes = static_cast<std::int64_t>(file->size());
+    benchmark::DoNotOptimize(document->grid.point_count());
+  }
+  std::filesystem::remove(path);
+  state.SetBytesProcessed(bytes * state.iterations());
+  state.counters["elements"] = static_cast<double>(state.range(0));
+  state.counters["file_MB"] = static_cast<double>(bytes) / 1e6;
+}
+
+}  // namespace
+
+void RegisterFileIoBenchmarks() {
+  for (const std::int64_t size : BenchmarkSizes()) {
+    for (const BinaryFormat& format : kFormats) {
+      benchmark::RegisterBenchmark((std::string("FileWrite/") + format.name).c_str(), BM_Write,
+                                   &format)
+          ->Arg(size)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark((std::string("FileRead/") + format.name).c_str(), BM_Read,
+                                   &format)
+          ->Arg(size)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
+}
+
+}  // namespace getme::bench
