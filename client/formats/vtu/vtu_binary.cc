@@ -4,6 +4,8 @@
 
 #include <bit>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "absl/status/status.h"
@@ -202,11 +204,11 @@ void DecodeValues(absl::string_view data, VtkDataType type, ByteOrder order, Dat
   }
 }
 
-absl::StatusOr<EncodedPayload> EncodePayload(absl::string_view raw, bool zlib) {
+absl::StatusOr<EncodedPayload> EncodePayload(std::string raw, bool zlib) {
   EncodedPayload encoded;
   if (!zlib) {
     AppendUnsigned(encoded.header, raw.size(), 8);
-    encoded.data = std::string(raw);
+    encoded.data = std::move(raw);
     return encoded;
   }
   const auto size = static_cast<std::int64_t>(raw.size());
@@ -215,7 +217,7 @@ absl::StatusOr<EncodedPayload> EncodePayload(absl::string_view raw, bool zlib) {
   AppendUnsigned(encoded.header, kBlockSize, 8);
   AppendUnsigned(encoded.header, size % kBlockSize, 8);
   for (std::int64_t block = 0; block < blocks; ++block) {
-    const absl::string_view input = raw.substr(block * kBlockSize, kBlockSize);
+    const absl::string_view input = absl::string_view(raw).substr(block * kBlockSize, kBlockSize);
     uLongf length = compressBound(static_cast<uLong>(input.size()));
     const std::size_t at = encoded.data.size();
     encoded.data.resize(at + length);
@@ -231,21 +233,53 @@ absl::StatusOr<EncodedPayload> EncodePayload(absl::string_view raw, bool zlib) {
   return encoded;
 }
 
+namespace {
+
+// Writes `values` as kSize-byte little-endian integers into `out`, which has room for them: the
+// whole array at once, not a byte per push_back (a 10M-element connectivity is 80M values).
+template <int kSize, typename Value, typename ToBits>
+void PutLittleEndian(char* out, std::span<const Value> values, ToBits to_bits) {
+  for (const Value value : values) {
+    const std::uint64_t bits = to_bits(value);
+    for (int i = 0; i < kSize; ++i) *out++ = static_cast<char>((bits >> (8 * i)) & 0xff);
+  }
+}
+
+// Grows `out` by values.size() × size bytes and returns where they go.
+template <typename Value>
+char* Grow(std::string& out, std::span<const Value> values, int size) {
+  const std::size_t at = out.size();
+  out.resize(at + values.size() * static_cast<std::size_t>(size));
+  return out.data() + at;
+}
+
+}  // namespace
+
 void AppendIntegers(std::string& out, std::span<const std::int64_t> values, VtkDataType type) {
   const int size = DataTypeInfo(type).binary_size;
-  for (const std::int64_t value : values) {
-    AppendUnsigned(out, static_cast<std::uint64_t>(value), size);
+  char* at = Grow(out, values, size);
+  const auto bits = [](std::int64_t value) { return static_cast<std::uint64_t>(value); };
+  switch (size) {
+    case 1:
+      return PutLittleEndian<1>(at, values, bits);
+    case 2:
+      return PutLittleEndian<2>(at, values, bits);
+    case 4:
+      return PutLittleEndian<4>(at, values, bits);
+    default:
+      return PutLittleEndian<8>(at, values, bits);
   }
 }
 
 void AppendReals(std::string& out, std::span<const double> values, VtkDataType type) {
-  for (const double value : values) {
-    if (type == VtkDataType::kFloat) {
-      AppendUnsigned(out, std::bit_cast<std::uint32_t>(static_cast<float>(value)), 4);
-    } else {
-      AppendUnsigned(out, std::bit_cast<std::uint64_t>(value), 8);
-    }
+  if (type == VtkDataType::kFloat) {
+    PutLittleEndian<4>(Grow(out, values, 4), values, [](double value) {
+      return static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(static_cast<float>(value)));
+    });
+    return;
   }
+  PutLittleEndian<8>(Grow(out, values, 8), values,
+                     [](double value) { return std::bit_cast<std::uint64_t>(value); });
 }
 
 }  // namespace getme::formats::vtu

@@ -43,7 +43,8 @@ struct EncodedPayload {
   std::string header;
   std::string data;  // the raw values, or the zlib streams of their blocks
 };
-absl::StatusOr<EncodedPayload> EncodePayload(absl::string_view raw, bool zlib);
+// Takes `raw` by value: uncompressed, it becomes the payload's data without a copy.
+absl::StatusOr<EncodedPayload> EncodePayload(std::string raw, bool zlib);
 
 // Append values as little-endian `type` (an XML storage type; integers of it, reals of Float32
 // or Float64).

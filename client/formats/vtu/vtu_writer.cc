@@ -69,6 +69,7 @@ class Writer {
     absl::StrAppend(&out_, "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n");
     if (appended_) {
       // meshio's reader drops everything after the last newline before </AppendedData>.
+      out_.reserve(out_.size() + appended_data_.size() + 64);
       absl::StrAppend(&out_, "  <AppendedData encoding=\"raw\">\n   _", appended_data_,
                       "\n  </AppendedData>\n");
     }
@@ -251,7 +252,7 @@ class Writer {
     } else {
       vtu::AppendReals(raw, values.reals, type);
     }
-    absl::StatusOr<vtu::EncodedPayload> payload = vtu::EncodePayload(raw, zlib_);
+    absl::StatusOr<vtu::EncodedPayload> payload = vtu::EncodePayload(std::move(raw), zlib_);
     if (!payload.ok()) return payload.status();
     if (appended_) {
       absl::StrAppend(&out_, " format=\"appended\" offset=\"", appended_data_.size(), "\"/>\n");
