@@ -57,8 +57,7 @@ bool SurfaceSlide::Slides(NodeId node) const {
   return options_.keep_layers || layers_.level[node] < 0;
 }
 
-int SurfaceSlide::TangentSpace(const Mesh& mesh, NodeId node, double scale,
-                               std::array<Vec3, 2>& basis) const {
+int SurfaceSlide::TangentSpace(const Mesh& mesh, NodeId node, std::array<Vec3, 2>& basis) const {
   const auto at = [&](std::int64_t n) { return Vec3(mesh.x()[n], mesh.y()[n], mesh.z()[n]); };
   const std::int64_t begin = neighbourhood_offsets_[node];
   const std::int64_t end = neighbourhood_offsets_[node + 1];
@@ -88,7 +87,7 @@ int SurfaceSlide::TangentSpace(const Mesh& mesh, NodeId node, double scale,
       return 2;
     }
   }
-  return BoundarySlide::TangentSpace(mesh, node, scale, basis);
+  return BoundarySlide::TangentSpace(mesh, node, basis);
 }
 
 Vec3 SurfaceSlide::Project(NodeId node, const Vec3& point, const Vec3* near) const {

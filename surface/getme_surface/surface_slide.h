@@ -48,8 +48,7 @@ class SurfaceSlide final : public BoundarySlide {
   // chord between the neighbours. No nearest-point query (each costs about 0.7 µs, and the
   // polish asks for a tangent space at every step of a sliding node). Falls back to
   // BoundarySlide's projections where the faces give no direction.
-  int TangentSpace(const Mesh& mesh, NodeId node, double scale,
-                   std::array<Vec3, 2>& basis) const override;
+  int TangentSpace(const Mesh& mesh, NodeId node, std::array<Vec3, 2>& basis) const override;
   const KeptLayers* kept_layers() const override { return options_.keep_layers ? &kept_ : nullptr; }
   // The point of the ray at the node's input wall distance, the distance along it corrected by
   // nearest-point queries on the input's walls (AlongToWallDistance); a boundary node's ray is

@@ -296,8 +296,8 @@ TEST(SurfaceSlideTest, TangentSpacesAreTheFacesAndEdgesTheNodesSlideOn) {
   for (NodeId node = 0; node < cube.node_count(); ++node) {
     if (!(*slide)->Slides(node)) continue;
     std::array<Vec3, 2> basis, reference;
-    const int count = (*slide)->TangentSpace(cube, node, 0.5, basis);
-    const int reference_count = (*slide)->BoundarySlide::TangentSpace(cube, node, 0.5, reference);
+    const int count = (*slide)->TangentSpace(cube, node, basis);
+    const int reference_count = (*slide)->BoundarySlide::TangentSpace(cube, node, reference);
     // One coordinate on the cube's bounds: a face (two directions); two: an edge (one).
     const int bounds = BoundCount(cube, node);
     ASSERT_EQ(count, 3 - bounds) << "node " << node;

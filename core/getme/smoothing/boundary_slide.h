@@ -32,12 +32,11 @@ class BoundarySlide {
   virtual double DistanceToSurface(const Vec3& point) const = 0;
   // An orthonormal basis of the directions sliding node `node` may move in where `mesh` has it
   // (a point where it belongs): two on a surface, one along a feature curve, none where it
-  // cannot move. Returns how many. `scale` is a length of the mesh there (the node's nearest
-  // neighbour distance). This default reads them off Project(): small moves along the three
-  // axes, put back onto the surface, span the tangent space (three queries). An implementation
-  // that knows the node's boundary faces can answer from their current corners instead.
-  virtual int TangentSpace(const Mesh& mesh, NodeId node, double scale,
-                           std::array<Vec3, 2>& basis) const;
+  // cannot move. Returns how many. This default reads them off Project(): small moves along the
+  // three axes (a ten-thousandth of the node's nearest-neighbour distance), put back onto the
+  // surface, span the tangent space (three queries). An implementation that knows the node's
+  // boundary faces can answer from their current corners instead.
+  virtual int TangentSpace(const Mesh& mesh, NodeId node, std::array<Vec3, 2>& basis) const;
   // The boundary-layer columns to keep (SmoothingParams::keep_layers); nullptr if not built.
   virtual const KeptLayers* kept_layers() const { return nullptr; }
   // Where column node kept_layers()->nodes[index] goes on the ray from `from` (its wall node)

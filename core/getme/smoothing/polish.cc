@@ -157,19 +157,9 @@ bool EvaluateTrial(const Mesh& mesh, NodeId node, PolishState& state, double& co
 // Replaces `g` and `h` by their restrictions to the tangent space written back in 3-D (with
 // P = BBᵀ, B the tangent basis: g ← Pg, h ← PhP + (I − P)), so the caller's Newton solve gives a
 // tangential step.
-void RestrictToTangent(const SmoothingContext& context, NodeId node, const Vec3& at, Vec3& g,
-                       Eigen::Matrix3d& h) {
-  const Mesh& mesh = context.mesh;
-  double nearest2 = std::numeric_limits<double>::infinity();
-  for (ElementId e : mesh.node_elements(node)) {
-    for (NodeId other : mesh.element_nodes(e)) {
-      if (other == node) continue;
-      const Vec3 p(mesh.x()[other], mesh.y()[other], mesh.z()[other]);
-      nearest2 = std::min(nearest2, (p - at).squaredNorm());
-    }
-  }
+void RestrictToTangent(const SmoothingContext& context, NodeId node, Vec3& g, Eigen::Matrix3d& h) {
   std::array<Vec3, 2> basis;
-  const int count = context.slide->TangentSpace(mesh, node, std::sqrt(nearest2), basis);
+  const int count = context.slide->TangentSpace(context.mesh, node, basis);
   Eigen::Matrix3d projector = Eigen::Matrix3d::Zero();
   for (int k = 0; k < count; ++k) projector += basis[k] * basis[k].transpose();
   g = projector * g;
@@ -190,7 +180,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   Eigen::Matrix3d h;
   if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h)) return NodeStep::kRefused;
   if (context.sliding[node]) {
-    RestrictToTangent(context, node, Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]), g, h);
+    RestrictToTangent(context, node, g, h);
   }
   if (!g.allFinite() || g.squaredNorm() == 0.0) return NodeStep::kConverged;
 
@@ -386,9 +376,10 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
   return !cancelled;
 }
 
-// The three stages of polish.h over the nodes context.movable says are free; false if cancelled.
-bool RunStages(SmoothingContext& context, SmoothingContext::Summary& current,
-               PhaseSummary& summary) {
+}  // namespace
+
+absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
+  const double phase_start = context.ElapsedSeconds();
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
   // Once per call, in a fixed order: the sets, and so the order of the node steps, depend on the
@@ -396,6 +387,9 @@ bool RunStages(SmoothingContext& context, SmoothingContext::Summary& current,
   const NodeColouring colouring = ColourNodes(mesh, context.movable);
   PolishState state(mesh.node_count());
   state.trial_quality.assign(mesh.element_count(), 0.0);
+
+  SmoothingContext::Summary current = context.Summarize();
+  PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
   bool finished = true;
   // Worst elements first: the mean stage cannot lower q_min, so whatever q_min the polish is to
   // reach must come before it.
@@ -427,16 +421,6 @@ bool RunStages(SmoothingContext& context, SmoothingContext::Summary& current,
                           current, summary);
     }
   }
-  return finished;
-}
-
-}  // namespace
-
-absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
-  const double phase_start = context.ElapsedSeconds();
-  SmoothingContext::Summary current = context.Summarize();
-  PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
-  const bool finished = RunStages(context, current, summary);
   context.FinishPhase(summary, current, phase_start);
   if (!finished) return absl::CancelledError("smoothing cancelled during the polish stage");
   return summary;
