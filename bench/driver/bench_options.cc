@@ -31,6 +31,8 @@ Runs:
   --literal               the paper's algorithm, safeguards off (as `getme smooth --literal`)
   --no-polish             end --method getme after the sequential substep (no polish stage)
   --max-iterations N      cap every phase at N iterations (sequential: picks)
+  --sequential-batch N    sequential picks per batch (as `getme smooth`; 1 = the paper's one
+                          pick at a time)
   --target-q-mean Q       also report the time until q_mean first reaches Q
 Output:
   --out DIR               JSON per measurement and traces into DIR (created)
@@ -146,6 +148,17 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
                 absl::StrCat("--max-iterations: '", value, "' is not an integer >= 1"));
           }
           options.max_iterations = cap;
+          return absl::OkStatus();
+        }}},
+      {"--sequential-batch",
+       {true,
+        [&](const std::string& value) {
+          std::int64_t batch = 0;
+          if (!absl::SimpleAtoi(value, &batch) || batch < 1 || batch > 65536) {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--sequential-batch: '", value, "' is not an integer in [1, 65536]"));
+          }
+          options.sequential_batch = batch;
           return absl::OkStatus();
         }}},
       {"--target-q-mean",

@@ -28,12 +28,13 @@ struct BenchOptions {
   std::vector<int> thread_counts = {1};
   int repeats = 3;
   // As `getme smooth` has them (cmdline::ToSmoothingParams): --free-boundary, --literal,
-  // --no-polish, --max-iterations (a cap on every phase, e.g. to time a fixed number of
-  // iterations on 10M elements).
+  // --no-polish, --sequential-batch, --max-iterations (a cap on every phase, e.g. to time a fixed
+  // number of iterations on 10M elements).
   bool free_boundary = false;
   bool literal = false;
   bool no_polish = false;
   std::optional<std::int64_t> max_iterations;
+  std::optional<std::int64_t> sequential_batch;
   // Seconds until a trace first reaches this q_mean (e.g. Mesquite's final q_mean − 0.005).
   std::optional<double> target_q_mean;
   std::string out_dir;  // empty: print the summary table only

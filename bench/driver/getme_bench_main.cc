@@ -43,6 +43,9 @@ std::string SmoothingOptionsText(const BenchOptions& options) {
   if (options.max_iterations.has_value()) {
     flags.push_back(absl::StrCat("--max-iterations ", *options.max_iterations));
   }
+  if (options.sequential_batch.has_value()) {
+    flags.push_back(absl::StrCat("--sequential-batch ", *options.sequential_batch));
+  }
   return absl::StrJoin(flags, " ");
 }
 
@@ -76,6 +79,7 @@ SmoothingParams ParamsFor(const BenchOptions& options, Method method, int thread
   smooth.literal = options.literal;
   smooth.no_polish = options.no_polish;
   smooth.max_iterations = options.max_iterations;
+  smooth.sequential_batch = options.sequential_batch;
   return cmdline::ToSmoothingParams(smooth);
 }
 

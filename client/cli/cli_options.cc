@@ -59,6 +59,8 @@ Options:
   --no-polish          end --method getme after the sequential substep: no polish stage,
                        which otherwise raises q_mean to the global optimiser's level
                        without lowering q_min (docs/quality.md#polish)
+  --sequential-batch N sequential picks per batch, evaluated in parallel (default 128); 1 picks
+                       one element at a time, as the paper (docs/parallel-sequential.md)
   --fix-physical G     keep the nodes of group G fixed: a Gmsh physical group by name, tag or
                        DIM:TAG; a number also matches gmsh:physical / medit:ref cell data.
                        Repeatable.
@@ -276,6 +278,7 @@ absl::Status CheckAccessFlags(const ServerAccessOptions& access, bool remote) {
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args) {
   SmoothCommandOptions options;
   std::int64_t max_iterations = 0;
+  std::int64_t sequential_batch = 0;
   std::string boundary;  // --boundary, empty if not given
   bool feature_angle_given = false;
   bool binary = false;
@@ -321,6 +324,8 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--literal", {false, SetTrue(options.smoothing.literal)}},
       {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
       {"--no-polish", {false, SetTrue(options.smoothing.no_polish)}},
+      {"--sequential-batch",
+       {true, IntegerFlag<std::int64_t>("--sequential-batch", sequential_batch, 1, 65536)}},
       {"--untangle-boundary", {false, SetTrue(options.smoothing.untangle_boundary)}},
       {"--fix-physical",
        {true,
@@ -348,6 +353,7 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
     return status;
   }
   if (max_iterations > 0) options.smoothing.max_iterations = max_iterations;
+  if (sequential_batch > 0) options.smoothing.sequential_batch = sequential_batch;
   if (!boundary.empty()) {
     if (options.smoothing.free_boundary && boundary != "free") {
       return absl::InvalidArgumentError(absl::StrCat("--free-boundary and --boundary ", boundary,

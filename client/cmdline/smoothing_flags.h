@@ -9,8 +9,8 @@ namespace getme::cmdline {
 
 // The flags that select the engine's parameters, as `getme smooth` spells them: --method,
 // --threads, --max-iterations, --boundary (and its spelling --free-boundary), --feature-angle,
-// --literal, --no-untangle, --untangle-boundary, --no-polish. getme-bench takes a subset with the
-// same meaning.
+// --literal, --no-untangle, --untangle-boundary, --no-polish, --sequential-batch. getme-bench takes
+// a subset with the same meaning.
 struct SmoothingFlags {
   Method method = Method::kGetme;
   int threads = 0;  // 0 = all cores
@@ -23,6 +23,8 @@ struct SmoothingFlags {
   bool no_untangle = false;        // refuse invalid input instead of untangling it
   bool no_polish = false;          // end --method getme after the sequential substep
   bool untangle_boundary = false;  // boundary nodes of invalid elements may move while untangling
+  // --sequential-batch N: sequential picks per batch (1: one at a time, as the paper)
+  std::optional<std::int64_t> sequential_batch;
 };
 
 // The engine parameters the flags select: method, threads, fix_boundary, untangle, polish, the

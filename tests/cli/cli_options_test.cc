@@ -14,6 +14,7 @@ TEST(CliOptions, LiteralSwitchesOffEverySafeguard) {
   EXPECT_FALSE(params.sequential_transform_blockers);
   EXPECT_FALSE(params.untangle);
   EXPECT_FALSE(params.polish);
+  EXPECT_EQ(params.sequential_batch, 1);
   // Without the flags the safeguards and untangling are on (the defaults).
   auto defaults = ParseSmoothArguments({"in.vtk", "out.vtk"});
   ASSERT_TRUE(defaults.ok());
@@ -23,6 +24,26 @@ TEST(CliOptions, LiteralSwitchesOffEverySafeguard) {
   EXPECT_TRUE(default_params.sequential_transform_blockers);
   EXPECT_TRUE(default_params.untangle);
   EXPECT_TRUE(default_params.polish);
+}
+
+TEST(CliOptions, SequentialBatchSetsPicksPerBatchWithinItsRange) {
+  auto options = ParseSmoothArguments({"in.vtk", "out.vtk", "--sequential-batch", "16"});
+  ASSERT_TRUE(options.ok()) << options.status();
+  EXPECT_EQ(ToSmoothingParams(*options).sequential_batch, 16);
+  // With --literal too, the explicit batch wins over the literal algorithm's one pick.
+  options = ParseSmoothArguments({"in.vtk", "out.vtk", "--literal", "--sequential-batch", "16"});
+  ASSERT_TRUE(options.ok()) << options.status();
+  EXPECT_EQ(ToSmoothingParams(*options).sequential_batch, 16);
+  auto defaults = ParseSmoothArguments({"in.vtk", "out.vtk"});
+  ASSERT_TRUE(defaults.ok());
+  EXPECT_EQ(ToSmoothingParams(*defaults).sequential_batch, SmoothingParams().sequential_batch);
+  for (const char* bad : {"0", "65537", "-3", "many"}) {
+    options = ParseSmoothArguments({"in.vtk", "out.vtk", "--sequential-batch", bad});
+    ASSERT_FALSE(options.ok()) << bad;
+    EXPECT_EQ(options.status().code(), absl::StatusCode::kInvalidArgument);
+    EXPECT_NE(options.status().message().find("--sequential-batch"), std::string::npos)
+        << options.status();
+  }
 }
 
 TEST(CliOptions, UntangleBoundaryFreesBoundaryNodesForUntanglingOnly) {

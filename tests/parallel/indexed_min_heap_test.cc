@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace getme {
 namespace {
@@ -39,6 +42,17 @@ void ExpectHeapMatchesModel(const IndexedMinHeap& heap, const Model& model, int 
   }
   ASSERT_EQ(heap.top(), best) << "after op " << step;
   ASSERT_EQ(heap.top_key(), best_key) << "after op " << step;
+  if (step % 97 != 0) return;  // the full in-order walk now and then: it is O(n log n)
+  std::vector<std::pair<double, std::int32_t>> sorted;
+  for (const auto& [item, key] : model) sorted.push_back({key, item});
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::pair<double, std::int32_t>> visited;
+  std::vector<std::size_t> frontier;
+  heap.VisitInKeyOrder(frontier, [&](std::int32_t item, double key) {
+    visited.push_back({key, item});
+    return true;
+  });
+  ASSERT_EQ(visited, sorted) << "after op " << step;
 }
 
 // Keys from a small set so that ties are frequent, plus occasional wide values.
@@ -95,6 +109,26 @@ TEST(IndexedMinHeap, EqualKeysPopInItemOrder) {
   }
   EXPECT_EQ(heap.top(), 0);
   EXPECT_EQ(heap.top_key(), 1.0);
+}
+
+TEST(IndexedMinHeap, VisitInKeyOrderStopsWhenAskedAndLeavesTheHeapAlone) {
+  IndexedMinHeap heap(8);
+  for (std::int32_t item : {6, 2, 7, 0, 5, 1, 4, 3}) heap.Push(item, item % 3 * 0.5);
+  // Keys: 0 → items 0, 3, 6; 0.5 → 1, 4, 7; 1 → 2, 5. The first five in (key, item) order:
+  std::vector<std::int32_t> first;
+  std::vector<std::size_t> frontier;
+  heap.VisitInKeyOrder(frontier, [&](std::int32_t item, double) {
+    first.push_back(item);
+    return first.size() < 5;
+  });
+  EXPECT_EQ(first, (std::vector<std::int32_t>{0, 3, 6, 1, 4}));
+  EXPECT_EQ(heap.top(), 0);
+  EXPECT_EQ(heap.size(), 8);
+  IndexedMinHeap empty(3);
+  empty.VisitInKeyOrder(frontier, [&](std::int32_t, double) -> bool {
+    ADD_FAILURE() << "an empty heap has nothing to visit";
+    return true;
+  });
 }
 
 TEST(IndexedMinHeap, DecreasingAKeyToATieWithTheTopPrefersTheSmallerId) {

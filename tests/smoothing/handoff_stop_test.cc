@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "getme/meshgen/hybrid_block.h"
@@ -73,14 +74,21 @@ TEST(HandOnStopTest, SimultaneousStopsAtTheFirstIterationWhoseWindowGainIsTooSma
   EXPECT_GT(paper.result.iterations_simultaneous, n);
 }
 
-TEST(HandOnStopTest, SequentialStopsOneWindowAfterTheLastRiseOfTheBestMinimum) {
+// One pick at a time (the paper's), and batches of independent picks (issue 16): with batches
+// the rule is checked after each batch, whose event carries the picks done so far.
+class SequentialHandOnTest : public ::testing::TestWithParam<std::int64_t> {};
+
+TEST_P(SequentialHandOnTest, StopsOneWindowAfterTheLastRiseOfTheBestMinimum) {
   SmoothingParams params;
   params.threads = 2;
-  params.sequential_cycle = 1;  // an event per pick, with the mesh's q_min after it
+  params.sequential_batch = GetParam();
+  params.sequential_batch_elements = 1;  // batches of sequential_batch picks on this small mesh
+  params.sequential_cycle = 1;           // an event per batch, with the mesh's q_min after it
   params.sequential_handoff_window = 300;
   const RecordedRun run = SmoothRecording(params);
   const std::vector<ProgressEvent> sequential = run.Of(Phase::kSequential);
-  ASSERT_EQ(static_cast<std::int64_t>(sequential.size()), run.result.iterations_sequential);
+  ASSERT_FALSE(sequential.empty());
+  ASSERT_EQ(sequential.back().iteration, run.result.iterations_sequential);
   ASSERT_GE(run.result.phases.size(), 2u);
 
   // The rule, independently: the best q_min so far (from the state the simultaneous substep
@@ -89,8 +97,13 @@ TEST(HandOnStopTest, SequentialStopsOneWindowAfterTheLastRiseOfTheBestMinimum) {
   double risen = best;
   std::int64_t risen_pick = 0;
   std::int64_t expected_stop = -1;
-  for (std::int64_t pick = 1; pick <= static_cast<std::int64_t>(sequential.size()); ++pick) {
-    best = std::max(best, sequential[pick - 1].q_min);
+  std::int64_t previous_pick = 0;
+  for (const ProgressEvent& event : sequential) {
+    const std::int64_t pick = event.iteration;
+    ASSERT_GT(pick, previous_pick);
+    ASSERT_LE(pick - previous_pick, params.sequential_batch) << "a batch has at most this many";
+    previous_pick = pick;
+    best = std::max(best, event.q_min);
     if (best - risen >= params.sequential_improvement_tolerance) {
       risen = best;
       risen_pick = pick;
@@ -111,6 +124,9 @@ TEST(HandOnStopTest, SequentialStopsOneWindowAfterTheLastRiseOfTheBestMinimum) {
   const RecordedRun paper = SmoothRecording(params);
   EXPECT_GT(paper.result.iterations_sequential, run.result.iterations_sequential);
 }
+
+INSTANTIATE_TEST_SUITE_P(OneAtATimeAndBatches, SequentialHandOnTest, ::testing::Values(1, 64),
+                         [](const auto& info) { return "batch" + std::to_string(info.param); });
 
 }  // namespace
 }  // namespace getme

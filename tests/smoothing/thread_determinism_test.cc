@@ -17,6 +17,7 @@ TEST_P(ThreadDeterminismTest, SameCoordinatesForAnyThreadCount) {
   params.method = GetParam();
   params.simultaneous_max_iterations = 15;
   params.sequential_max_iterations = 3000;
+  params.sequential_batch_elements = 64;  // batches of up to 64 picks on this small mesh
   const std::vector<testing::ThreadCountRun> runs = testing::SmoothAtThreadCounts(
       [] { return meshgen::HybridBlock(10, 10, 8, 0.3, 7); }, params, {1, 2, 3, 4});
   ASSERT_EQ(runs.size(), 4u);
@@ -32,7 +33,10 @@ TEST_P(ThreadDeterminismTest, SameCoordinatesForAnyThreadCount) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ThreadDeterminismTest,
-                         ::testing::Values(Method::kSimultaneous, Method::kGetme, Method::kLaplace),
+                         // kSequential and kWarpage: batches of sequential picks (issue 16),
+                         // selected by q and by q_γ.
+                         ::testing::Values(Method::kSimultaneous, Method::kSequential,
+                                           Method::kGetme, Method::kWarpage, Method::kLaplace),
                          [](const auto& info) {
                            std::string name = MethodName(info.param);
                            for (char& c : name) {

@@ -71,6 +71,46 @@ TEST(ToWireParameters, ChangedFieldsAreSent) {
   ASSERT_TRUE(wire.has_polish());
   EXPECT_FALSE(wire.polish());
   EXPECT_FALSE(wire.has_polish_max_sweeps());
+  // ...and picks one element at a time.
+  ASSERT_TRUE(wire.has_sequential_batch());
+  EXPECT_EQ(wire.sequential_batch(), 1);
+  EXPECT_FALSE(wire.has_sequential_batch_band());
+}
+
+TEST(ToEngineParams, SequentialBatchFieldsRoundTrip) {
+  SmoothingParams params;
+  params.sequential_batch = 256;
+  params.sequential_batch_band = 0.05;
+  params.sequential_batch_elements = 100;
+  const v1::SmoothingParameters wire = ToWireParameters(params);
+  EXPECT_EQ(wire.sequential_batch(), 256);
+  EXPECT_EQ(wire.sequential_batch_band(), 0.05);
+  EXPECT_EQ(wire.sequential_batch_elements(), 100);
+  absl::StatusOr<SmoothingParams> back = ToEngineParams(wire, 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->sequential_batch, 256);
+  EXPECT_EQ(back->sequential_batch_band, 0.05);
+  EXPECT_EQ(back->sequential_batch_elements, 100);
+  // `literal` sets one pick at a time; an explicit batch given with it still wins, as every
+  // explicit field does.
+  v1::SmoothingParameters literal;
+  literal.set_literal(true);
+  back = ToEngineParams(literal, 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->sequential_batch, 1);
+  literal.set_sequential_batch(8);
+  back = ToEngineParams(literal, 1);
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->sequential_batch, 8);
+  // Out of range: the engine names the field, the wire says where it sits.
+  v1::SmoothingParameters bad;
+  bad.set_sequential_batch(0);
+  back = ToEngineParams(bad, 1);
+  ASSERT_FALSE(back.ok());
+  EXPECT_EQ(back.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(back.status().message().find("parameters: parameter sequential_batch = 0"),
+            std::string::npos)
+      << back.status();
 }
 
 TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {

@@ -138,6 +138,13 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
     params.sequential_transform_blockers = wire.sequential_transform_blockers();
   }
   if (wire.has_sequential_cycle()) params.sequential_cycle = wire.sequential_cycle();
+  if (wire.has_sequential_batch()) params.sequential_batch = wire.sequential_batch();
+  if (wire.has_sequential_batch_elements()) {
+    params.sequential_batch_elements = wire.sequential_batch_elements();
+  }
+  if (wire.has_sequential_batch_band()) {
+    params.sequential_batch_band = wire.sequential_batch_band();
+  }
   if (wire.has_gamma()) params.gamma = wire.gamma();
   if (wire.has_laplace_tolerance()) params.laplace_tolerance = wire.laplace_tolerance();
   if (wire.has_laplace_max_iterations()) {
@@ -241,6 +248,9 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.sequential_backtracking_steps, defaults.sequential_backtracking_steps, [&](int v) { wire.set_sequential_backtracking_steps(v); });
   SetIfChanged(params.sequential_transform_blockers, defaults.sequential_transform_blockers, [&](bool v) { wire.set_sequential_transform_blockers(v); });
   SetIfChanged(params.sequential_cycle, defaults.sequential_cycle, [&](std::int64_t v) { wire.set_sequential_cycle(v); });
+  SetIfChanged(params.sequential_batch, defaults.sequential_batch, [&](std::int64_t v) { wire.set_sequential_batch(v); });
+  SetIfChanged(params.sequential_batch_elements, defaults.sequential_batch_elements, [&](std::int64_t v) { wire.set_sequential_batch_elements(v); });
+  SetIfChanged(params.sequential_batch_band, defaults.sequential_batch_band, [&](double v) { wire.set_sequential_batch_band(v); });
   SetIfChanged(params.gamma, defaults.gamma, [&](double v) { wire.set_gamma(v); });
   SetIfChanged(params.laplace_tolerance, defaults.laplace_tolerance, [&](double v) { wire.set_laplace_tolerance(v); });
   SetIfChanged(params.laplace_max_iterations, defaults.laplace_max_iterations, [&](std::int64_t v) { wire.set_laplace_max_iterations(v); });

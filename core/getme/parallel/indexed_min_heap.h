@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -24,6 +26,48 @@ class IndexedMinHeap {
     heap_.push_back({key, item});
     position_[item] = static_cast<std::int32_t>(heap_.size() - 1);
     SiftUp(heap_.size() - 1);
+  }
+
+  // Calls visit(item, key) for the items in ascending (key, item) order until it returns false,
+  // without changing the heap: a best-first walk of the heap tree, whose frontier (heap
+  // positions, itself kept as a binary heap in `frontier`, reused between calls) holds at most
+  // one more entry per visited item. Visiting the k smallest items costs O(k log k).
+  template <typename Visit>
+  void VisitInKeyOrder(std::vector<std::size_t>& frontier, Visit&& visit) const {
+    frontier.clear();
+    if (heap_.empty()) return;
+    const auto later = [this](std::size_t a, std::size_t b) { return heap_[b] < heap_[a]; };
+    frontier.push_back(0);
+    while (!frontier.empty()) {
+      std::pop_heap(frontier.begin(), frontier.end(), later);
+      const std::size_t at = frontier.back();
+      frontier.pop_back();
+      if (!visit(heap_[at].item, heap_[at].key)) return;
+      for (std::size_t child = 2 * at + 1; child <= 2 * at + 2 && child < heap_.size(); ++child) {
+        frontier.push_back(child);
+        std::push_heap(frontier.begin(), frontier.end(), later);
+      }
+    }
+  }
+
+  void Remove(std::int32_t item) {
+    const std::size_t at = position_[item];
+    position_[item] = kAbsent;
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    if (at == heap_.size()) return;
+    heap_[at] = last;
+    position_[last.item] = static_cast<std::int32_t>(at);
+    if (at > 0 && last < heap_[(at - 1) / 2]) {
+      SiftUp(at);
+    } else {
+      SiftDown(at);
+    }
+  }
+
+  void Clear() {
+    for (const Entry& entry : heap_) position_[entry.item] = kAbsent;
+    heap_.clear();
   }
 
   void Update(std::int32_t item, double key) {

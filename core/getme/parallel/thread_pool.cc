@@ -1,8 +1,21 @@
 #include "getme/parallel/thread_pool.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace getme {
+namespace {
+
+// Tells the core that this is a spin loop, so a sibling hardware thread gets its resources.
+inline void CpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+}  // namespace
 
 ThreadPool::ThreadPool(int threads) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -22,19 +35,34 @@ ThreadPool::~ThreadPool() {
 void ThreadPool::RunChunks() {
   for (;;) {
     std::int64_t begin;
+    const std::function<void(std::int64_t, std::int64_t)>* body;
     {
       std::lock_guard lock(mutex_);
       begin = next_chunk_;
       if (begin >= count_) return;
       next_chunk_ = std::min(count_, begin + grain_);
+      body = body_;
+      ++running_;
     }
-    (*body_)(begin, std::min(count_, begin + grain_));
+    (*body)(begin, std::min(count_, begin + grain_));
+    {
+      std::lock_guard lock(mutex_);
+      if (--running_ == 0) work_done_.notify_all();
+    }
   }
 }
 
 void ThreadPool::WorkerLoop() {
   std::uint64_t seen_generation = 0;
   for (;;) {
+    // Back-to-back ParallelFor calls (the sequential substep's batches: a few hundred
+    // microseconds each) would otherwise wait for a sleeping worker to be woken every time; a
+    // short spin catches the next call while it is still coming.
+    const auto spin_end = std::chrono::steady_clock::now() + kSpin;
+    for (int i = 0; published_generation_.load(std::memory_order_acquire) == seen_generation; ++i) {
+      CpuRelax();
+      if (i % 64 == 63 && std::chrono::steady_clock::now() >= spin_end) break;
+    }
     {
       std::unique_lock lock(mutex_);
       work_ready_.wait(lock, [&] { return stopping_ || generation_ != seen_generation; });
@@ -42,10 +70,6 @@ void ThreadPool::WorkerLoop() {
       seen_generation = generation_;
     }
     RunChunks();
-    {
-      std::lock_guard lock(mutex_);
-      if (--busy_ == 0) work_done_.notify_all();
-    }
   }
 }
 
@@ -65,13 +89,15 @@ void ThreadPool::ParallelFor(std::int64_t count, std::int64_t grain,
     count_ = count;
     grain_ = grain;
     next_chunk_ = 0;
-    busy_ = static_cast<int>(workers_.size());
     ++generation_;
+    published_generation_.store(generation_, std::memory_order_release);
   }
   work_ready_.notify_all();
   RunChunks();
+  // Every chunk is taken: wait only for the chunks still running. A worker that wakes later finds
+  // nothing left and never touches `body`, so the caller does not wait for it to wake.
   std::unique_lock lock(mutex_);
-  work_done_.wait(lock, [&] { return busy_ == 0; });
+  work_done_.wait(lock, [&] { return running_ == 0; });
   body_ = nullptr;
 }
 

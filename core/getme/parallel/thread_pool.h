@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -44,8 +46,12 @@ class ThreadPool {
   std::int64_t count_ = 0;
   std::int64_t grain_ = 1;
   std::int64_t next_chunk_ = 0;  // guarded by mutex_
-  int busy_ = 0;                 // workers still inside the current ParallelFor
+  int running_ = 0;              // chunks being run, on any thread; guarded by mutex_
   std::uint64_t generation_ = 0;
+  // generation_, readable without the mutex by a spinning worker.
+  std::atomic<std::uint64_t> published_generation_{0};
+  // How long a worker that finished its chunks spins for the next ParallelFor before it sleeps.
+  static constexpr std::chrono::microseconds kSpin{200};
   bool stopping_ = false;
 };
 

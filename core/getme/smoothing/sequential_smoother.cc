@@ -8,7 +8,7 @@
 #include "getme/elements/transform.h"
 #include "getme/elements/vec3.h"
 #include "getme/mesh/element_neighbours.h"
-#include "getme/parallel/indexed_min_heap.h"
+#include "getme/parallel/lowest_keys_heap.h"
 
 namespace getme {
 namespace {
@@ -19,6 +19,31 @@ constexpr std::int64_t kCancelCheckInterval = 256;
 struct NodeBackup {
   NodeId node;
   double x, y, z;
+};
+
+// A key update that moves entries of a heap, left for the serial part of a batch.
+struct HeapUpdate {
+  LowestKeysHeap* heap;
+  std::int32_t item;
+  double key;
+};
+
+// One pick of a batch: carried out in parallel by RunPick, which also updates the per-element state
+// of the elements it evaluated (no other pick of the batch touches them), and finished in batch
+// order by FinishPick. The vectors are reused from batch to batch.
+struct PickWork {
+  ElementId element = -1;
+  bool applied = false;
+  // A selectable neighbour that an attempt of the step would have inverted (the last one found),
+  // also when a shorter attempt then succeeded.
+  ElementId blocker = -1;
+  std::vector<NodeBackup> backup;
+  std::vector<NodeBackup> target;
+  std::vector<ElementId> affected;  // the element, then its neighbours through movable nodes
+  std::vector<double> affected_quality;
+  std::vector<double> quality_gain;  // per affected element: its new q − its old q (invalid as 0)
+  std::vector<HeapUpdate> heap_updates;
+  ElementNeighbourFinder neighbour_finder;
 };
 
 class SequentialSubstep {
@@ -32,21 +57,50 @@ class SequentialSubstep {
         phase_(criterion == SelectionCriterion::kMeanRatio ? Phase::kSequential : Phase::kWarpage),
         penalty_(mesh_.element_count(), 0.0),
         criterion_value_(mesh_.element_count()),
-        selection_(mesh_.element_count()),
-        quality_min_(mesh_.element_count()),
-        criterion_min_(criterion == SelectionCriterion::kMeanRatio ? 0 : mesh_.element_count()) {}
+        picked_in_batch_(mesh_.element_count(), -1),
+        batch_limit_(BatchLimit(params_, mesh_)),
+        claimed_(batch_limit_ > 1 ? (mesh_.element_count() + 63) / 64 : 0, 0),
+        selection_(mesh_.element_count(), 4 * batch_limit_, HeapStock(mesh_)),
+        quality_min_(mesh_.element_count(), 1, HeapStock(mesh_)),
+        criterion_min_(criterion == SelectionCriterion::kMeanRatio ? 0 : mesh_.element_count(), 1,
+                       HeapStock(mesh_)) {}
 
   absl::StatusOr<PhaseSummary> Run();
 
  private:
   double Criterion(ElementId element, double quality) const;
   bool HasMovableNode(ElementId element) const;
-  double CriterionMinimum() const {
+  // Picks per batch: at most sequential_batch, and one per sequential_batch_elements elements.
+  static std::int64_t BatchLimit(const SmoothingParams& params, const Mesh& mesh) {
+    return std::clamp<std::int64_t>(mesh.element_count() / params.sequential_batch_elements, 1,
+                                    params.sequential_batch);
+  }
+  // How many of the lowest keys the heaps keep sorted: few enough that an update sifts through a
+  // heap that stays in cache, enough that restocking (a pass over every element) is rare.
+  static std::int64_t HeapStock(const Mesh& mesh) { return mesh.element_count() / 64; }
+  double CriterionMinimum() {
     return criterion_ == SelectionCriterion::kMeanRatio ? quality_min_.top_key()
                                                         : criterion_min_.top_key();
   }
-  // One pick of Steps 1–3; returns the number of nodes reverted (0 when it was applied).
-  std::int64_t TransformWorst();
+  // Whether no element around the movable nodes of `element` (itself included) is claimed by an
+  // earlier pick of this batch.
+  // Fills work.affected: the element, then its neighbours through movable nodes.
+  void FindAffected(PickWork& work);
+  bool TryClaim(const PickWork& work);
+  // Chooses the picks of the next batch: work_[picks_[i]], with their affected elements found.
+  void ChooseBatch();
+  // Steps 1.2–3.2 of one pick (Sec. 3.2). Writes only the pick's own movable nodes, the state of
+  // the elements it evaluates, and `work`: the picks of a batch run in parallel.
+  void RunPick(PickWork& work);
+  void SetKey(LowestKeysHeap& heap, std::int32_t item, double key, PickWork& work) {
+    if (!heap.UpdateOutsideHeap(item, key)) work.heap_updates.push_back({&heap, item, key});
+  }
+  // What of a pick is shared with the others (q_mean's running sum, the undo log, the heaps but
+  // the selection), in batch order; returns the nodes reverted (0 if the step was applied).
+  std::int64_t FinishPick(PickWork& work);
+  // FinishPick for every pick of the batch, in batch order, and the selection heap's updates;
+  // returns the nodes reverted.
+  std::int64_t FinishBatch();
   void RestoreBest();
 
   SmoothingContext& context_;
@@ -57,23 +111,28 @@ class SequentialSubstep {
   const Phase phase_;
   std::vector<double> penalty_;          // π_j ≥ 0
   std::vector<double> criterion_value_;  // q(E_j) or q_γ(E_j)
+  // The batch each element was last picked in (Δπ_r: picked in the batch before).
+  std::vector<std::int64_t> picked_in_batch_;
+  const std::int64_t batch_limit_;  // BatchLimit
+  // With batches of more than one pick: a bit per element claimed by a pick of the batch being
+  // chosen (TryClaim).
+  std::vector<std::uint64_t> claimed_;
   // Keyed by criterion + π over elements with a movable node; items are canonical ranks, so ties
   // break in the canonical order (Mesh::canonical_order).
-  IndexedMinHeap selection_;
-  IndexedMinHeap quality_min_;  // keyed by q, every element: the mesh's q_min
+  LowestKeysHeap selection_;
+  LowestKeysHeap quality_min_;  // keyed by q, every element: the mesh's q_min
   // Keyed by the criterion, every element; left empty for the mean-ratio criterion, whose key is
   // quality_min_'s (a valid element's q ≥ 0), so CriterionMinimum reads that heap instead.
-  IndexedMinHeap criterion_min_;
+  LowestKeysHeap criterion_min_;
   double quality_sum_ = 0.0;
-  ElementId last_pick_ = -1;
-  ElementId blocker_ = -1;  // a neighbour that a reverted step would have inverted
+  std::int64_t batch_ = 0;             // batches begun
+  std::vector<ElementId> blockers_;    // neighbours that reverted steps of the last batch would
+                                       // have inverted: picked first in the next one
+  std::vector<std::size_t> frontier_;  // IndexedMinHeap::VisitInKeyOrder's scratch
+  std::vector<ElementId> candidates_;
+  std::vector<PickWork> work_;       // one per candidate
+  std::vector<std::int64_t> picks_;  // the batch: indices into work_
   std::vector<NodeBackup> undo_since_best_;
-  std::vector<NodeBackup> pick_backup_;
-  std::vector<NodeBackup> pick_target_;
-  ElementNeighbourFinder neighbour_finder_;
-  std::vector<ElementId> affected_;
-  std::vector<double> affected_quality_;
-  std::vector<double> affected_criterion_;
 };
 
 double SequentialSubstep::Criterion(ElementId element, double quality) const {
@@ -93,24 +152,87 @@ bool SequentialSubstep::HasMovableNode(ElementId element) const {
   return false;
 }
 
-std::int64_t SequentialSubstep::TransformWorst() {
-  ElementId pick = mesh_.canonical_order()[selection_.top()];
-  if (blocker_ >= 0) {
-    pick = blocker_;
-    blocker_ = -1;
-  }
-  // Δπ_r: the same element was picked in the previous step (Step 3.2).
-  if (pick == last_pick_) penalty_[pick] += params_.penalty_repeat;
-  last_pick_ = pick;
+void SequentialSubstep::FindAffected(PickWork& work) {
+  work.affected.assign(1, work.element);
+  const auto neighbours = work.neighbour_finder.Find(mesh_, work.element, context_.movable);
+  work.affected.insert(work.affected.end(), neighbours.begin(), neighbours.end());
+}
 
+// Two picks are independent when no element has a movable node of both: then neither reads a
+// node the other moves nor evaluates an element the other evaluates, so evaluating them in
+// parallel gives what evaluating them one after the other in either order gives. A pick taken
+// into the batch claims the elements it evaluates (itself and those around its movable nodes); a
+// candidate is independent of the batch when it would evaluate no claimed element. Claims are
+// bits, cleared after the batch: at a million elements the bit set stays in a core's L2 cache.
+bool SequentialSubstep::TryClaim(const PickWork& work) {
+  for (ElementId element : work.affected) {
+    if (claimed_[element >> 6] >> (element & 63) & 1) return false;
+  }
+  for (ElementId element : work.affected)
+    claimed_[element >> 6] |= std::uint64_t{1} << (element & 63);
+  return true;
+}
+
+void SequentialSubstep::ChooseBatch() {
+  const std::int64_t limit = batch_limit_;
+  picks_.clear();
+  candidates_.clear();
+  // The serial algorithm: a blocker of the last pick, else the element with the lowest key.
+  if (limit == 1) {
+    candidates_.push_back(blockers_.empty() ? mesh_.canonical_order()[selection_.top()]
+                                            : blockers_.front());
+  } else {
+    // Batches: the last batch's blockers first, then the elements in key order, each taken if it
+    // is independent of those taken before it. Looking at most 4 × the batch size deep keeps a
+    // batch among the worst elements when they crowd together (the batch is then smaller).
+    candidates_ = blockers_;
+    std::int64_t looked_at = 0;
+    const double band_end = selection_.top_key() + params_.sequential_batch_band;
+    selection_.VisitInKeyOrder(frontier_, [&](std::int32_t rank, double key) {
+      if (looked_at > 0 && key > band_end) return false;
+      candidates_.push_back(mesh_.canonical_order()[rank]);
+      return ++looked_at < 4 * limit;
+    });
+  }
+  blockers_.clear();
+  if (work_.size() < candidates_.size()) work_.resize(candidates_.size());
+  for (std::size_t i = 0; i < candidates_.size(); ++i) work_[i].element = candidates_[i];
+  if (limit == 1) {
+    FindAffected(work_[0]);
+    picks_.push_back(0);
+    return;
+  }
+  // Finding what a candidate would evaluate reads the mesh's node→element rows around it, cold in
+  // cache: the largest cost of choosing, so it runs in parallel, for as many candidates at a time
+  // as about give a full batch (measured: about half of the candidates are independent). A
+  // candidate that a blocker duplicates is not taken twice: it claimed itself.
+  const auto count = static_cast<std::int64_t>(candidates_.size());
+  for (std::int64_t begin = 0; begin < count && static_cast<std::int64_t>(picks_.size()) < limit;
+       begin += 2 * limit) {
+    const std::int64_t end = std::min(count, begin + 2 * limit);
+    context_.pool.ParallelFor(end - begin, 8, [&](std::int64_t from, std::int64_t to) {
+      for (std::int64_t i = begin + from; i < begin + to; ++i) FindAffected(work_[i]);
+    });
+    for (std::int64_t i = begin; i < end && static_cast<std::int64_t>(picks_.size()) < limit; ++i) {
+      if (TryClaim(work_[i])) picks_.push_back(i);
+    }
+  }
+  for (std::int64_t i : picks_) {
+    for (ElementId element : work_[i].affected) claimed_[element >> 6] = 0;
+  }
+}
+
+void SequentialSubstep::RunPick(PickWork& work) {
+  const ElementId pick = work.element;
   // Steps 1.2, 1.3 and 2: transform with the fixed σ^type, scale, relax, set the free nodes.
   auto x = mesh_.x();
   auto y = mesh_.y();
   auto z = mesh_.z();
   const std::span<const NodeId> ids = mesh_.element_nodes(pick);
   const ElementType type = mesh_.type(pick);
-  pick_backup_.clear();
-  pick_target_.clear();
+  work.backup.clear();
+  work.target.clear();
+  work.blocker = -1;
   DispatchElementType(type, [&]<ElementType kType>() {
     const auto moved =
         RegularizingStep<kType>(GatherNodes<kType>(mesh_, ids.data()),
@@ -118,8 +240,8 @@ std::int64_t SequentialSubstep::TransformWorst() {
     for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
       const NodeId node = ids[k];
       if (!context_.movable[node]) continue;
-      pick_backup_.push_back({node, x[node], y[node], z[node]});
-      pick_target_.push_back({node, moved[k].x(), moved[k].y(), moved[k].z()});
+      work.backup.push_back({node, x[node], y[node], z[node]});
+      work.target.push_back({node, moved[k].x(), moved[k].y(), moved[k].z()});
     }
   });
 
@@ -127,18 +249,14 @@ std::int64_t SequentialSubstep::TransformWorst() {
   // docs/quality.md) a step that would invert a neighbour is retried at half the length. Only the
   // neighbours through a movable node change: the others keep their quality (and validity), so
   // they are not evaluated.
-  affected_.assign(1, pick);
-  const auto neighbours = neighbour_finder_.Find(mesh_, pick, context_.movable);
-  affected_.insert(affected_.end(), neighbours.begin(), neighbours.end());
-  affected_quality_.resize(affected_.size());
-  affected_criterion_.resize(affected_.size());
+  work.affected_quality.resize(work.affected.size());
   bool valid = false;
   double fraction = 1.0;
   for (int attempt = 0; attempt <= params_.sequential_backtracking_steps && !valid;
        ++attempt, fraction *= 0.5) {
-    for (std::size_t i = 0; i < pick_target_.size(); ++i) {
-      const NodeBackup& from = pick_backup_[i];
-      const NodeBackup& to = pick_target_[i];
+    for (std::size_t i = 0; i < work.target.size(); ++i) {
+      const NodeBackup& from = work.backup[i];
+      const NodeBackup& to = work.target[i];
       const Vec3 placed = context_.Placed(
           from.node,
           Vec3(from.x + fraction * (to.x - from.x), from.y + fraction * (to.y - from.y),
@@ -149,47 +267,90 @@ std::int64_t SequentialSubstep::TransformWorst() {
       z[from.node] = placed[2];
     }
     valid = true;
-    for (std::size_t i = 0; i < affected_.size() && valid; ++i) {
-      affected_quality_[i] = ElementQualityOrInvalid(mesh_, affected_[i]);
-      valid = affected_quality_[i] >= 0.0;
+    for (std::size_t i = 0; i < work.affected.size() && valid; ++i) {
+      work.affected_quality[i] = ElementQualityOrInvalid(mesh_, work.affected[i]);
+      valid = work.affected_quality[i] >= 0.0;
       if (!valid && params_.sequential_transform_blockers &&
-          selection_.contains(mesh_.canonical_rank(affected_[i]))) {
-        blocker_ = affected_[i];
+          selection_.contains(mesh_.canonical_rank(work.affected[i]))) {
+        work.blocker = work.affected[i];
       }
     }
   }
-  if (valid) {
-    for (std::size_t i = 0; i < affected_.size(); ++i) {
-      affected_criterion_[i] = Criterion(affected_[i], affected_quality_[i]);
-    }
-  }
+  work.applied = valid;
+  work.heap_updates.clear();
+  // Δπ_r: the same element was picked in the previous step (Step 3.2); with batches, in the
+  // previous batch.
+  if (picked_in_batch_[pick] == batch_ - 1) penalty_[pick] += params_.penalty_repeat;
+  picked_in_batch_[pick] = batch_;
   if (!valid) {
-    for (const NodeBackup& b : pick_backup_) {
+    for (const NodeBackup& b : work.backup) {
       x[b.node] = b.x;
       y[b.node] = b.y;
       z[b.node] = b.z;
     }
     penalty_[pick] += params_.penalty_invalid;  // Δπ_i
-    selection_.Update(mesh_.canonical_rank(pick), criterion_value_[pick] + penalty_[pick]);
-    return static_cast<std::int64_t>(pick_backup_.size());
+    SetKey(selection_, mesh_.canonical_rank(pick), criterion_value_[pick] + penalty_[pick], work);
+    return;
   }
   penalty_[pick] = std::max(0.0, penalty_[pick] - params_.penalty_success);  // Δπ_s
-  undo_since_best_.insert(undo_since_best_.end(), pick_backup_.begin(), pick_backup_.end());
-  for (std::size_t i = 0; i < affected_.size(); ++i) {
-    const ElementId element = affected_[i];
-    const double q = affected_quality_[i];
-    quality_sum_ += q - std::max(0.0, context_.quality[element]);
+  work.quality_gain.resize(work.affected.size());
+  for (std::size_t i = 0; i < work.affected.size(); ++i) {
+    const ElementId element = work.affected[i];
+    const double q = work.affected_quality[i];
+    work.quality_gain[i] = q - std::max(0.0, context_.quality[element]);
     context_.quality[element] = q;
-    criterion_value_[element] = affected_criterion_[i];
-    quality_min_.Update(element, q);
+    criterion_value_[element] = Criterion(element, q);
+    SetKey(quality_min_, element, q, work);
     if (criterion_ != SelectionCriterion::kMeanRatio) {
-      criterion_min_.Update(element, criterion_value_[element]);
+      SetKey(criterion_min_, element, criterion_value_[element], work);
     }
     if (const std::int32_t rank = mesh_.canonical_rank(element); selection_.contains(rank)) {
-      selection_.Update(rank, criterion_value_[element] + penalty_[element]);
+      SetKey(selection_, rank, criterion_value_[element] + penalty_[element], work);
     }
   }
-  return 0;
+}
+
+std::int64_t SequentialSubstep::FinishPick(PickWork& work) {
+  if (work.blocker >= 0) blockers_.push_back(work.blocker);
+  if (work.applied) {
+    undo_since_best_.insert(undo_since_best_.end(), work.backup.begin(), work.backup.end());
+    for (double gain : work.quality_gain) quality_sum_ += gain;
+  }
+  for (const HeapUpdate& update : work.heap_updates) {
+    if (update.heap != &selection_) update.heap->Update(update.item, update.key);
+  }
+  return work.applied ? 0 : static_cast<std::int64_t>(work.backup.size());
+}
+
+std::int64_t SequentialSubstep::FinishBatch() {
+  // The selection heap on one thread, the rest on another: each in batch order, so the outcome is
+  // the same as one thread doing both. The selection heap takes about half of this serial step.
+  std::int64_t reverts = 0;
+  auto update_selection = [&] {
+    for (std::int64_t i : picks_) {
+      for (const HeapUpdate& update : work_[i].heap_updates) {
+        if (update.heap == &selection_) selection_.Update(update.item, update.key);
+      }
+    }
+  };
+  auto finish_the_rest = [&] {
+    for (std::int64_t i : picks_) reverts += FinishPick(work_[i]);
+  };
+  if (picks_.size() == 1) {
+    update_selection();
+    finish_the_rest();
+    return reverts;
+  }
+  context_.pool.ParallelFor(2, 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t task = begin; task < end; ++task) {
+      if (task == 0) {
+        update_selection();
+      } else {
+        finish_the_rest();
+      }
+    }
+  });
+  return reverts;
 }
 
 void SequentialSubstep::RestoreBest() {
@@ -221,12 +382,12 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
     const double q = std::max(0.0, context_.quality[element]);
     quality_sum_ += q;
     criterion_value_[element] = Criterion(element, q);
-    quality_min_.Push(element, q);
+    quality_min_.Insert(element, q);
     if (criterion_ != SelectionCriterion::kMeanRatio) {
-      criterion_min_.Push(element, criterion_value_[element]);
+      criterion_min_.Insert(element, criterion_value_[element]);
     }
     if (HasMovableNode(element)) {
-      selection_.Push(mesh_.canonical_rank(element), criterion_value_[element]);
+      selection_.Insert(mesh_.canonical_rank(element), criterion_value_[element]);
     }
   }
 
@@ -241,8 +402,20 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   bool cancelled = false;
   std::int64_t pick = 0;
   while (!selection_.empty() && pick < cap) {
-    ++pick;
-    cycle_reverts += TransformWorst();
+    ++batch_;
+    ChooseBatch();
+    if (static_cast<std::int64_t>(picks_.size()) > cap - pick) picks_.resize(cap - pick);
+    const auto batch_size = static_cast<std::int64_t>(picks_.size());
+    if (batch_size == 1) {
+      RunPick(work_[picks_[0]]);
+    } else {
+      context_.pool.ParallelFor(batch_size, 4, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t i = begin; i < end; ++i) RunPick(work_[picks_[i]]);
+      });
+    }
+    cycle_reverts += FinishBatch();
+    const std::int64_t picks_before = pick;
+    pick += batch_size;
     const double current_min = CriterionMinimum();
     if (current_min > best_min) {
       best_min = current_min;
@@ -261,14 +434,17 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
       window_start_min = best_min;
       window_start = pick;
     }
-    if (pick % params_.sequential_cycle == 0 || stalled || pick == cap) {
+    const auto passed = [&](std::int64_t interval) {
+      return pick / interval > picks_before / interval;
+    };
+    if (passed(params_.sequential_cycle) || stalled || pick == cap) {
       summary.reverted_nodes += cycle_reverts;
       context_.Report({phase_, pick, quality_min_.top_key(),
                        quality_sum_ / static_cast<double>(elements), 0, cycle_reverts,
                        context_.ElapsedSeconds(), false});
       cycle_reverts = 0;
     }
-    if (pick % kCancelCheckInterval == 0 && context_.Cancelled()) {
+    if (passed(kCancelCheckInterval) && context_.Cancelled()) {
       cancelled = true;
       break;
     }

@@ -98,6 +98,7 @@ absl::Status SmoothingParams::Validate() const {
         {"penalty_success", penalty_success},
         {"laplace_tolerance", laplace_tolerance},
         {"sequential_improvement_tolerance", sequential_improvement_tolerance},
+        {"sequential_batch_band", sequential_batch_band},
         {"polish_tolerance", polish_tolerance},
         {"polish_node_tolerance", polish_node_tolerance},
         {"simultaneous_handoff_gain", simultaneous_handoff_gain},
@@ -125,6 +126,14 @@ absl::Status SmoothingParams::Validate() const {
   }
   if (sequential_cycle < 1) {
     return OutOfRange("sequential_cycle", static_cast<double>(sequential_cycle), ">= 1");
+  }
+  // A batch's picks keep their work buffers between batches (sequential_smoother.cc).
+  if (sequential_batch < 1 || sequential_batch > 65536) {
+    return OutOfRange("sequential_batch", static_cast<double>(sequential_batch), "in [1, 65536]");
+  }
+  if (sequential_batch_elements < 1) {
+    return OutOfRange("sequential_batch_elements", static_cast<double>(sequential_batch_elements),
+                      ">= 1");
   }
   if (simultaneous_backtracking_steps < 0 || simultaneous_backtracking_steps > 30) {
     return OutOfRange("simultaneous_backtracking_steps", simultaneous_backtracking_steps,

@@ -75,6 +75,21 @@ struct SmoothingParams {
   // neighbour is transformed next. The mean ratio averages node tetrahedra, so an element with one
   // nearly flat node tetrahedron can block its neighbours while never being the worst.
   bool sequential_transform_blockers = true;
+  // Beyond the paper (issue 16, item 1): picks per batch. A batch takes the elements in key order
+  // (criterion + π, canonical tie-break), skipping any that shares an element around its movable
+  // nodes with one taken before it, so the picks of a batch are independent: they are evaluated in
+  // parallel and applied in batch order, and the result is the same for every thread count. 1 is
+  // the paper's one pick at a time (docs/parallel-sequential.md has what a batch changes and its
+  // measured quality).
+  std::int64_t sequential_batch = 128;
+  // ...and at most one pick per this many elements: a mesh below twice this size is smoothed one
+  // pick at a time. Batches pay where picks are many (a million elements take a million picks);
+  // on small meshes their overhead costs more than a second thread gains, and a batch is a larger
+  // share of the mesh's worst elements.
+  std::int64_t sequential_batch_elements = 16384;
+  // Only elements whose key is at most this above the lowest key join a batch: where a few
+  // elements lag behind the rest the batch shrinks toward the serial algorithm's single pick.
+  double sequential_batch_band = 0.01;
   // Picks between two progress events / cancellation checks / q_mean evaluations (Sec. 3.2,
   // last paragraph: q_mean is evaluated only every prescribed number of iterations).
   std::int64_t sequential_cycle = 1000;
@@ -168,13 +183,14 @@ struct SmoothingParams {
   absl::Status Validate() const;
 
   // Switches off everything that goes beyond the paper's Sections 3.1–3.3 (simultaneous and
-  // sequential backtracking, transforming blocking neighbours, the polish and with it the
-  // simultaneous hand-on rule), for comparison with the literal algorithm. Untangling and the
-  // sequential stop rule are unaffected.
+  // sequential backtracking, transforming blocking neighbours, batches of sequential picks, the
+  // polish and with it the simultaneous hand-on rule), for comparison with the literal algorithm.
+  // Untangling and the sequential stop rule are unaffected.
   void UseLiteralPaperAlgorithm() {
     simultaneous_backtracking_steps = 0;
     sequential_backtracking_steps = 0;
     sequential_transform_blockers = false;
+    sequential_batch = 1;
     polish = false;
   }
 };
