@@ -51,8 +51,8 @@ INSTANTIATE_TEST_SUITE_P(SequentialAndDefault, BatchedQualityTest,
                          ::testing::Values(Method::kSequential, Method::kGetme),
                          [](const auto& info) { return std::string(MethodName(info.param)); });
 
-// Below twice sequential_batch_elements there is one pick per batch: the default run is then the
-// serial algorithm's, bit for bit, on the small meshes where batches would not pay.
+// Below 16 × sequential_batch_elements there is one pick per batch: the default run is then the
+// serial algorithm's, bit for bit, on the meshes where batches would not pay.
 TEST(SequentialBatchTest, SmallMeshIsSmoothedOnePickAtATime) {
   SmoothingParams defaults;
   defaults.threads = 2;
@@ -60,9 +60,16 @@ TEST(SequentialBatchTest, SmallMeshIsSmoothedOnePickAtATime) {
   serial.sequential_batch = 1;
   const BlockRun with_default = SmoothBlock(defaults, 12, 5);
   const BlockRun one_at_a_time = SmoothBlock(serial, 12, 5);
-  ASSERT_LT(with_default.result.after.elements, 2 * defaults.sequential_batch_elements);
+  ASSERT_LT(with_default.result.after.elements, 16 * defaults.sequential_batch_elements);
   EXPECT_TRUE(with_default.coordinates == one_at_a_time.coordinates);
   EXPECT_EQ(with_default.result.iterations_sequential, one_at_a_time.result.iterations_sequential);
+  // With 15 picks' worth of elements per batch still one at a time; with 16, batches.
+  SmoothingParams fifteen = defaults;
+  fifteen.sequential_batch_elements = with_default.result.after.elements / 15;
+  EXPECT_TRUE(SmoothBlock(fifteen, 12, 5).coordinates == one_at_a_time.coordinates);
+  SmoothingParams sixteen = defaults;
+  sixteen.sequential_batch_elements = with_default.result.after.elements / 16;
+  EXPECT_FALSE(SmoothBlock(sixteen, 12, 5).coordinates == one_at_a_time.coordinates);
 }
 
 // With no band, a batch takes only the elements tied at the lowest key (and the blockers of the

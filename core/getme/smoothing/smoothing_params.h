@@ -82,10 +82,10 @@ struct SmoothingParams {
   // the paper's one pick at a time (docs/parallel-sequential.md has what a batch changes and its
   // measured quality).
   std::int64_t sequential_batch = 128;
-  // ...and at most one pick per this many elements: a mesh below twice this size is smoothed one
-  // pick at a time. Batches pay where picks are many (a million elements take a million picks);
-  // on small meshes their overhead costs more than a second thread gains, and a batch is a larger
-  // share of the mesh's worst elements.
+  // ...and at most one pick per this many elements; where that allows fewer than 16 picks (below
+  // 262,144 elements by default), one pick at a time. Batches pay where picks are many (a million
+  // elements take a million picks); on smaller meshes their overhead costs more than a second
+  // thread gains, and a batch is a larger share of the mesh's worst elements.
   std::int64_t sequential_batch_elements = 16384;
   // Only elements whose key is at most this above the lowest key join a batch: where a few
   // elements lag behind the rest the batch shrinks toward the serial algorithm's single pick.
