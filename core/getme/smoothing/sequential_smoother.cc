@@ -35,7 +35,7 @@ struct HeapUpdate {
 
 // One pick of a batch: carried out in parallel by RunPick, which also updates the per-element state
 // of the elements it evaluated (no other pick of the batch touches them), and finished in batch
-// order by FinishPick. The vectors are reused from batch to batch.
+// order by FinishBatch. The vectors are reused from batch to batch.
 struct PickWork {
   ElementId element = -1;
   bool applied = false;
@@ -89,10 +89,10 @@ class SequentialSubstep {
     return criterion_ == SelectionCriterion::kMeanRatio ? quality_min_.top_key()
                                                         : criterion_min_.top_key();
   }
-  // Whether no element around the movable nodes of `element` (itself included) is claimed by an
-  // earlier pick of this batch.
   // Fills work.affected: the element, then its neighbours through movable nodes.
   void FindAffected(PickWork& work);
+  // Claims work.affected for the batch being chosen if no earlier pick of it claimed any of them;
+  // returns whether it did.
   bool TryClaim(const PickWork& work);
   // Chooses the picks of the next batch: work_[picks_[i]], with their affected elements found.
   void ChooseBatch();

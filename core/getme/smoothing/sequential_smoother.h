@@ -25,8 +25,11 @@ enum class SequentialStop {
 };
 
 // GETMe sequential (Sec. 3.2): repeatedly transform the element with the lowest corrected quality
-// q + π in place (indexed min-heap with key updates), revert it if a neighbour becomes invalid,
-// and adjust its penalty π. Hands on the best state seen (highest minimum criterion value).
+// q + π in place (a min-heap of the lowest keys, with key updates), revert it if a neighbour
+// becomes invalid, and adjust its penalty π. On large meshes the picks go in batches of
+// independent elements evaluated in parallel, the same for every thread count
+// (SmoothingParams::sequential_batch, docs/parallel-sequential.md). Hands on the best state seen
+// (highest minimum criterion value).
 // Requires a valid mesh; returns Cancelled (mesh valid, best state restored) if cancelled.
 absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion,
                                            SequentialStop stop = SequentialStop::kStalledWindow);
