@@ -151,16 +151,8 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
           return absl::OkStatus();
         }}},
       {"--sequential-batch",
-       {true,
-        [&](const std::string& value) {
-          std::int64_t batch = 0;
-          if (!absl::SimpleAtoi(value, &batch) || batch < 1 || batch > 65536) {
-            return absl::InvalidArgumentError(
-                absl::StrCat("--sequential-batch: '", value, "' is not an integer in [1, 65536]"));
-          }
-          options.sequential_batch = batch;
-          return absl::OkStatus();
-        }}},
+       {true, cmdline::IntegerFlag<std::int64_t>("--sequential-batch", options.sequential_batch, 1,
+                                                 65536)}},
       {"--target-q-mean",
        {true,
         [&](const std::string& value) {

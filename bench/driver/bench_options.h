@@ -34,7 +34,7 @@ struct BenchOptions {
   bool literal = false;
   bool no_polish = false;
   std::optional<std::int64_t> max_iterations;
-  std::optional<std::int64_t> sequential_batch;
+  std::int64_t sequential_batch = 0;  // 0: the engine's default
   // Seconds until a trace first reaches this q_mean (e.g. Mesquite's final q_mean − 0.005).
   std::optional<double> target_q_mean;
   std::string out_dir;  // empty: print the summary table only

@@ -43,8 +43,8 @@ std::string SmoothingOptionsText(const BenchOptions& options) {
   if (options.max_iterations.has_value()) {
     flags.push_back(absl::StrCat("--max-iterations ", *options.max_iterations));
   }
-  if (options.sequential_batch.has_value()) {
-    flags.push_back(absl::StrCat("--sequential-batch ", *options.sequential_batch));
+  if (options.sequential_batch > 0) {
+    flags.push_back(absl::StrCat("--sequential-batch ", options.sequential_batch));
   }
   return absl::StrJoin(flags, " ");
 }

@@ -278,7 +278,6 @@ absl::Status CheckAccessFlags(const ServerAccessOptions& access, bool remote) {
 absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std::string>& args) {
   SmoothCommandOptions options;
   std::int64_t max_iterations = 0;
-  std::int64_t sequential_batch = 0;
   std::string boundary;  // --boundary, empty if not given
   bool feature_angle_given = false;
   bool binary = false;
@@ -325,7 +324,8 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
       {"--no-untangle", {false, SetTrue(options.smoothing.no_untangle)}},
       {"--no-polish", {false, SetTrue(options.smoothing.no_polish)}},
       {"--sequential-batch",
-       {true, IntegerFlag<std::int64_t>("--sequential-batch", sequential_batch, 1, 65536)}},
+       {true, IntegerFlag<std::int64_t>("--sequential-batch", options.smoothing.sequential_batch, 1,
+                                        65536)}},
       {"--untangle-boundary", {false, SetTrue(options.smoothing.untangle_boundary)}},
       {"--fix-physical",
        {true,
@@ -353,7 +353,6 @@ absl::StatusOr<SmoothCommandOptions> ParseSmoothArguments(const std::vector<std:
     return status;
   }
   if (max_iterations > 0) options.smoothing.max_iterations = max_iterations;
-  if (sequential_batch > 0) options.smoothing.sequential_batch = sequential_batch;
   if (!boundary.empty()) {
     if (options.smoothing.free_boundary && boundary != "free") {
       return absl::InvalidArgumentError(absl::StrCat("--free-boundary and --boundary ", boundary,

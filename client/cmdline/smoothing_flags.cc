@@ -13,7 +13,7 @@ SmoothingParams ToSmoothingParams(const SmoothingFlags& flags) {
   params.untangle = !flags.no_untangle;
   if (flags.literal) params.UseLiteralPaperAlgorithm();
   if (flags.no_polish) params.polish = false;
-  if (flags.sequential_batch) params.sequential_batch = *flags.sequential_batch;
+  if (flags.sequential_batch > 0) params.sequential_batch = flags.sequential_batch;
   params.untangle_free_boundary = flags.untangle_boundary;
   if (flags.max_iterations) {
     params.untangle_max_iterations = *flags.max_iterations;

@@ -23,8 +23,9 @@ struct SmoothingFlags {
   bool no_untangle = false;        // refuse invalid input instead of untangling it
   bool no_polish = false;          // end --method getme after the sequential substep
   bool untangle_boundary = false;  // boundary nodes of invalid elements may move while untangling
-  // --sequential-batch N: sequential picks per batch (1: one at a time, as the paper)
-  std::optional<std::int64_t> sequential_batch;
+  // --sequential-batch N: sequential picks per batch (1: one at a time, as the paper); 0: the
+  // engine's default
+  std::int64_t sequential_batch = 0;
 };
 
 // The engine parameters the flags select: method, threads, fix_boundary, untangle, polish, the

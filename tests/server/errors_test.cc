@@ -187,6 +187,15 @@ TEST_F(ErrorsTest, BadParametersNameTheField) {
   parameters = {};
   parameters.set_sequential_cycle(0);
   ExpectInvalidParameters(parameters, "sequential_cycle");
+  parameters = {};
+  parameters.set_sequential_batch(100000);
+  ExpectInvalidParameters(parameters, "parameters: parameter sequential_batch = 100000");
+  parameters = {};
+  parameters.set_sequential_batch_elements(0);
+  ExpectInvalidParameters(parameters, "parameters: parameter sequential_batch_elements = 0");
+  parameters = {};
+  parameters.set_sequential_batch_band(-1.0);
+  ExpectInvalidParameters(parameters, "parameters: parameter sequential_batch_band = -1");
   v1::ResultOptions result_options;
   result_options.set_histogram_bins(1'000'000);
   grpc::Status status = SmoothStatus(ValidMesh(), {}, result_options);

@@ -1,10 +1,12 @@
 #include "getme/mesh/node_neighbours.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 #include <vector>
 
 #include "getme/elements/element_tables.h"
+#include "getme/elements/vec3.h"
 
 namespace getme {
 
@@ -34,6 +36,19 @@ CompressedRows BuildEdgeNeighbours(const Mesh& mesh) {
   }
   for (std::int64_t i = 0; i < mesh.node_count(); ++i) rows.offsets[i + 1] += rows.offsets[i];
   return rows;
+}
+
+double NearestNodeDistance2(const Mesh& mesh, NodeId node) {
+  const Vec3 at(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
+  double nearest2 = std::numeric_limits<double>::infinity();
+  for (ElementId e : mesh.node_elements(node)) {
+    for (NodeId other : mesh.element_nodes(e)) {
+      if (other == node) continue;
+      nearest2 = std::min(
+          nearest2, (Vec3(mesh.x()[other], mesh.y()[other], mesh.z()[other]) - at).squaredNorm());
+    }
+  }
+  return nearest2;
 }
 
 }  // namespace getme

@@ -1,23 +1,15 @@
 #include "getme/smoothing/boundary_slide.h"
 
 #include <Eigen/Eigenvalues>
-#include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "getme/mesh/node_neighbours.h"
 
 namespace getme {
 
 int BoundarySlide::TangentSpace(const Mesh& mesh, NodeId node, std::array<Vec3, 2>& basis) const {
   const Vec3 at(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-  double nearest2 = std::numeric_limits<double>::infinity();
-  for (ElementId e : mesh.node_elements(node)) {
-    for (NodeId other : mesh.element_nodes(e)) {
-      if (other == node) continue;
-      nearest2 = std::min(
-          nearest2, (Vec3(mesh.x()[other], mesh.y()[other], mesh.z()[other]) - at).squaredNorm());
-    }
-  }
-  const double epsilon = 1e-4 * std::sqrt(nearest2);
+  const double epsilon = 1e-4 * std::sqrt(NearestNodeDistance2(mesh, node));
   Eigen::Matrix3d moves;
   for (int k = 0; k < 3; ++k) {
     Vec3 trial = at;

@@ -10,6 +10,7 @@
 
 #include "getme/elements/mean_ratio_gradient.h"
 #include "getme/elements/vec3.h"
+#include "getme/mesh/node_neighbours.h"
 #include "getme/smoothing/whole_power.h"
 
 namespace getme {
@@ -344,19 +345,10 @@ Cluster FindCluster(const SmoothingContext& context, double q_min, std::vector<i
   std::sort(cluster.elements.begin(), cluster.elements.end());
   cluster.scale2.resize(cluster.nodes.size());
   for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
-    const NodeId node = cluster.nodes[i];
-    const Vec3 p(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (ElementId e : mesh.node_elements(node)) {
-      for (NodeId other : mesh.element_nodes(e)) {
-        if (other == node) continue;
-        nearest = std::min(
-            nearest, (Vec3(mesh.x()[other], mesh.y()[other], mesh.z()[other]) - p).squaredNorm());
-      }
-    }
     // Nodes of a valid element are distinct, so the distance is positive; the floor only keeps a
     // degenerate input from dividing by zero.
-    cluster.scale2[i] = std::max(nearest, std::numeric_limits<double>::min());
+    cluster.scale2[i] =
+        std::max(NearestNodeDistance2(mesh, cluster.nodes[i]), std::numeric_limits<double>::min());
   }
   return cluster;
 }
