@@ -16,7 +16,7 @@ import sys
 
 # folder -> include prefixes it must not use
 FORBIDDEN = {
-    # the engine: absl, Eigen and the standard library only
+    # the engine: absl, Eigen, Highway and the standard library only
     "core": ["getme/v1/", "getme_wire/", "getme_server/", "getme_support/", "getme_surface/",
              "remote/", "cli/", "formats/", "events/", "grpcpp/", "google/protobuf/", "spdlog/",
              "CGAL/"],

@@ -33,6 +33,9 @@ Runs:
   --max-iterations N      cap every phase at N iterations (sequential: picks)
   --sequential-batch N    sequential picks per batch (as `getme smooth`; 1 = the paper's one
                           pick at a time)
+  --kernel-lanes N         doubles per vector in the element passes: 2 (the reference), 4
+                          (AVX2) or 8 (AVX-512); default: the widest this machine runs. In-process
+                          runs only (a server uses its own widest)
   --target-q-mean Q       also report the time until q_mean first reaches Q
 Output:
   --out DIR               JSON per measurement and traces into DIR (created)
@@ -153,6 +156,17 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
       {"--sequential-batch",
        {true, cmdline::IntegerFlag<std::int64_t>("--sequential-batch", options.sequential_batch, 1,
                                                  65536)}},
+      {"--kernel-lanes",
+       {true,
+        [&](const std::string& value) {
+          int lanes = 0;
+          if (!absl::SimpleAtoi(value, &lanes) || (lanes != 2 && lanes != 4 && lanes != 8)) {
+            return absl::InvalidArgumentError(
+                absl::StrCat("--kernel-lanes: '", value, "' is not 2, 4 or 8"));
+          }
+          options.kernel_lanes = lanes;
+          return absl::OkStatus();
+        }}},
       {"--target-q-mean",
        {true,
         [&](const std::string& value) {
@@ -201,6 +215,11 @@ absl::StatusOr<BenchOptions> ParseBenchOptions(const std::vector<std::string>& a
   }
   if (options.write_meshes && options.out_dir.empty()) {
     return absl::InvalidArgumentError("--write-meshes needs --out DIR");
+  }
+  if (options.service && options.kernel_lanes != 0) {
+    // The wire carries no width: a server's runs would not be the width the table names.
+    return absl::InvalidArgumentError(
+        "--kernel-lanes applies to in-process runs; a server runs its own widest width");
   }
   return options;
 }

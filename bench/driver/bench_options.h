@@ -35,6 +35,8 @@ struct BenchOptions {
   bool no_polish = false;
   std::optional<std::int64_t> max_iterations;
   std::int64_t sequential_batch = 0;  // 0: the engine's default
+  // SmoothingParams::kernel_lanes of the in-process runs: 0 = the widest this machine runs.
+  int kernel_lanes = 0;
   // Seconds until a trace first reaches this q_mean (e.g. Mesquite's final q_mean − 0.005).
   std::optional<double> target_q_mean;
   std::string out_dir;  // empty: print the summary table only

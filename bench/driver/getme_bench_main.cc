@@ -46,6 +46,9 @@ std::string SmoothingOptionsText(const BenchOptions& options) {
   if (options.sequential_batch > 0) {
     flags.push_back(absl::StrCat("--sequential-batch ", options.sequential_batch));
   }
+  if (options.kernel_lanes > 0) {
+    flags.push_back(absl::StrCat("--kernel-lanes ", options.kernel_lanes));
+  }
   return absl::StrJoin(flags, " ");
 }
 
@@ -80,7 +83,9 @@ SmoothingParams ParamsFor(const BenchOptions& options, Method method, int thread
   smooth.no_polish = options.no_polish;
   smooth.max_iterations = options.max_iterations;
   smooth.sequential_batch = options.sequential_batch;
-  return cmdline::ToSmoothingParams(smooth);
+  SmoothingParams params = cmdline::ToSmoothingParams(smooth);
+  params.kernel_lanes = options.kernel_lanes;  // a benchmark's knob: `getme smooth` has none
+  return params;
 }
 
 void PrintProgress(const Measurement& measurement) {

@@ -136,6 +136,10 @@ std::string MeasurementJson(const Measurement& measurement, const BenchmarkMesh&
       .AddInt("rss_after_load_bytes", mesh.rss_after_load_bytes)
       .AddString("method", MethodName(measurement.method))
       .AddInt("threads", measurement.threads)
+      // The element passes' width an in-process run used; a server's runs choose their own.
+      .AddRaw("kernel_lanes", measurement.mode == RunMode::kInProcess
+                                  ? absl::StrCat(median.result.kernel_lanes)
+                                  : "null")
       .AddString("mode", RunModeName(measurement.mode))
       .AddInt("repeats", static_cast<std::int64_t>(measurement.repeats.size()))
       .AddBool("repeats_agree", RepeatsAgree(measurement))

@@ -9,6 +9,7 @@
 
 #include "bench_meshes.h"
 #include "floor_pass.h"
+#include "getme/smoothing/element_passes_dispatch.h"
 #include "getme/smoothing/simultaneous_iteration.h"
 #include "getme/smoothing/smoothing_context.h"
 
@@ -30,11 +31,12 @@ double ThreadCpuSeconds() {
 // A copy of a mesh with everything one simultaneous iteration needs on a given thread count.
 class IterationRig {
  public:
-  IterationRig(const Mesh& original, int threads)
+  // kernel_lanes: SmoothingParams::kernel_lanes (0 = the widest this machine runs).
+  IterationRig(const Mesh& original, int threads, int kernel_lanes = 0)
       : original_(original),
         mesh_(original),
         pool_(threads),
-        params_(ParamsFor(threads)),
+        params_(ParamsFor(threads, kernel_lanes)),
         context_(mesh_, params_, pool_, no_progress_, nullptr),
         initial_quality_(context_.quality),
         iteration_(mesh_) {}
@@ -56,9 +58,10 @@ class IterationRig {
   const Mesh& mesh() const { return mesh_; }
 
  private:
-  static SmoothingParams ParamsFor(int threads) {
+  static SmoothingParams ParamsFor(int threads, int kernel_lanes) {
     SmoothingParams params;
     params.threads = threads;
+    params.kernel_lanes = kernel_lanes;
     return params;
   }
 
@@ -93,10 +96,11 @@ void BM_SimultaneousIteration(benchmark::State& state) {
   state.counters["ns_per_element"] = 1e9 * total / (elements * state.iterations());
 }
 
-// (c) against (d), alternating on the same mesh so both see the same machine load.
+// (c) against (d), alternating on the same mesh so both see the same machine load; the element
+// passes state.range(1) lanes wide (issue 16, item 2).
 void BM_IterationOverFloor(benchmark::State& state) {
   const Mesh& original = HybridMeshNear(state.range(0));
-  IterationRig rig(original, 1);
+  IterationRig rig(original, 1, static_cast<int>(state.range(1)));
   NodeSums sums;
   double iteration_total = 0.0;
   double floor_total = 0.0;
@@ -157,11 +161,13 @@ void BM_TwoThreadSpeedup(benchmark::State& state) {
 // Size by size, so each mesh is generated once (bench_meshes.h keeps the last one).
 void RegisterSimultaneousIterationBenchmarks() {
   for (std::int64_t size : BenchmarkSizes()) {
-    benchmark::RegisterBenchmark("IterationOverFloor", BM_IterationOverFloor)
-        ->Args({size})
-        ->ArgNames({"elements"})
-        ->UseManualTime()
-        ->Unit(benchmark::kMillisecond);
+    for (int lanes : SupportedLaneWidths()) {
+      benchmark::RegisterBenchmark("IterationOverFloor", BM_IterationOverFloor)
+          ->Args({size, lanes})
+          ->ArgNames({"elements", "lanes"})
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond);
+    }
     for (int threads : {1, 2}) {
       benchmark::RegisterBenchmark("SimultaneousIteration", BM_SimultaneousIteration)
           ->Args({size, threads})

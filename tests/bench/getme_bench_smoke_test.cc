@@ -167,6 +167,40 @@ TEST(GetmeBenchSmoke, UnreachedTargetIsNull) {
   std::filesystem::remove_all(dir);
 }
 
+// --kernel-lanes 2 runs the reference passes; the default runs the widest this machine has. The
+// JSON records the width each used, and the result is the same bits either way.
+TEST(GetmeBenchSmoke, KernelLanesAreRecordedAndDoNotChangeTheResult) {
+  const std::filesystem::path reference_dir = FreshDirectory("lanes2");
+  const std::filesystem::path widest_dir = FreshDirectory("lanes_widest");
+  std::string out;
+  ASSERT_EQ(RunBench({"--generate", kGenerator, "--name", "tiny", "--methods", "getme", "--repeats",
+                      "1", "--kernel-lanes", "2", "--out", reference_dir.string()},
+                     out),
+            0);
+  ASSERT_EQ(RunBench({"--generate", kGenerator, "--name", "tiny", "--methods", "getme", "--repeats",
+                      "1", "--out", widest_dir.string()},
+                     out),
+            0);
+  const json reference = json::parse(ReadFile(reference_dir / "tiny.getme.t1.json"));
+  const json widest = json::parse(ReadFile(widest_dir / "tiny.getme.t1.json"));
+  EXPECT_EQ(reference["kernel_lanes"], 2);
+  EXPECT_EQ(reference["smoothing_options"], "--kernel-lanes 2");
+  EXPECT_TRUE(widest["kernel_lanes"] == 2 || widest["kernel_lanes"] == 4 ||
+              widest["kernel_lanes"] == 8)
+      << widest["kernel_lanes"];
+  EXPECT_EQ(widest["result"]["q_min"], reference["result"]["q_min"]);
+  EXPECT_EQ(widest["result"]["q_mean"], reference["result"]["q_mean"]);
+  std::filesystem::remove_all(reference_dir);
+  std::filesystem::remove_all(widest_dir);
+}
+
+TEST(GetmeBenchSmoke, KernelLanesOtherThanTwoFourOrEightAreRefused) {
+  std::string out;
+  for (const char* lanes : {"3", "16", "0", "four"}) {
+    EXPECT_EQ(RunBench({"--generate", kGenerator, "--kernel-lanes", lanes}, out), 2) << lanes;
+  }
+}
+
 #ifdef GETME_BENCH_WITH_SERVICE
 // Through a getme-server the driver starts: the same result as in-process (the engine is
 // deterministic and element order does not matter), and the overhead table is printed.

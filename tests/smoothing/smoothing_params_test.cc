@@ -154,8 +154,12 @@ INSTANTIATE_TEST_SUITE_P(
         BAD(NegativeSequentialBacktracking, p.sequential_backtracking_steps = -1,
             "sequential_backtracking_steps"),
         BAD(ThreadsAbove1024, p.threads = 1025, "threads"),
-        BAD(NegativeThreads, p.threads = -1, "threads"), BAD(ZeroGamma, p.gamma = 0.0, "gamma"),
-        BAD(NegativeGamma, p.gamma = -0.25, "gamma"), BAD(NaNGamma, p.gamma = kNaN, "gamma")),
+        BAD(NegativeThreads, p.threads = -1, "threads"),
+        BAD(ThreeKernelLanes, p.kernel_lanes = 3, "kernel_lanes"),
+        BAD(SixteenKernelLanes, p.kernel_lanes = 16, "kernel_lanes"),
+        BAD(NegativeKernelLanes, p.kernel_lanes = -2, "kernel_lanes"),
+        BAD(ZeroGamma, p.gamma = 0.0, "gamma"), BAD(NegativeGamma, p.gamma = -0.25, "gamma"),
+        BAD(NaNGamma, p.gamma = kNaN, "gamma")),
     [](const ::testing::TestParamInfo<BadField>& info) { return info.param.name; });
 
 #undef BAD
@@ -178,6 +182,10 @@ TEST(SmoothingParamsValidate, AcceptsTheEdgesOfEachRange) {
   params.sequential_backtracking_steps = 0;
   params.threads = 1024;
   EXPECT_TRUE(params.Validate().ok()) << params.Validate();
+  for (int lanes : {0, 2, 4, 8}) {
+    params.kernel_lanes = lanes;  // whether this machine runs the width is Smooth()'s to say
+    EXPECT_TRUE(params.Validate().ok()) << params.Validate();
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "getme/meshgen/hybrid_block.h"
 #include "getme/smoothing/smoother.h"
+#include "shuffled_mesh.h"
 #include "smoothing_test_support.h"
 
 namespace getme {
@@ -28,6 +29,26 @@ TEST_P(ThreadDeterminismTest, SameCoordinatesForAnyThreadCount) {
   }
   // The smoothing did move nodes, so the comparison is not vacuous.
   auto original = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
+  ASSERT_TRUE(original.ok());
+  EXPECT_FALSE(testing::CoordinateSnapshot(*original) == runs[0].coordinates);
+}
+
+// A mesh numbered without locality: the simultaneous substep's tiles follow the Morton order
+// (parallel/element_tiles.h), and the result is still the same for every thread count.
+TEST(ThreadDeterminismShuffledTest, SameCoordinatesForAnyThreadCount) {
+  SmoothingParams params;
+  params.method = Method::kSimultaneous;
+  params.simultaneous_max_iterations = 15;
+  const auto make = [] {
+    absl::StatusOr<Mesh> block = meshgen::HybridBlock(10, 10, 8, 0.3, 7);
+    if (!block.ok()) return block;
+    return absl::StatusOr<Mesh>(mesh_test::Shuffled(*block, 21));
+  };
+  const std::vector<testing::ThreadCountRun> runs =
+      testing::SmoothAtThreadCounts(make, params, {1, 2, 3, 4});
+  ASSERT_EQ(runs.size(), 4u);
+  testing::ExpectSameForEveryThreadCount(runs, {1, 2, 3, 4});
+  const absl::StatusOr<Mesh> original = make();
   ASSERT_TRUE(original.ok());
   EXPECT_FALSE(testing::CoordinateSnapshot(*original) == runs[0].coordinates);
 }

@@ -33,10 +33,20 @@
 namespace getme {
 namespace internal {
 
-using LaneBits = std::uint64_t __attribute__((vector_size(kLanes * sizeof(double))));
-
 template <typename S>
-using CubeRootBits = std::conditional_t<std::is_same_v<S, double>, std::uint64_t, LaneBits>;
+using LaneBits = typename LaneTypes<kLaneCount<S>>::Bits;
+
+// The integer type with the bits of S: one word for a double, a word per lane for lanes.
+template <typename S>
+struct CubeRootBitsOf {
+  using type = typename LaneTypes<kLaneCount<S>>::Bits;
+};
+template <>
+struct CubeRootBitsOf<double> {
+  using type = std::uint64_t;
+};
+template <typename S>
+using CubeRootBits = typename CubeRootBitsOf<S>::type;
 
 // Biased exponents of the arguments the polynomial-and-Halley path takes: 2^-959 ≤ x < 2^1017, so
 // y³ and 2y³ + x stay finite and normal.
@@ -91,10 +101,11 @@ inline double CubeRoot(double x) {
   return internal::FastCubeRoot(x);
 }
 
-inline Lanes CubeRoot(Lanes x) {
-  Lanes root = internal::FastCubeRoot(x);
-  const internal::LaneBits biased = std::bit_cast<internal::LaneBits>(x) >> 52;
-  for (int l = 0; l < kLanes; ++l) {
+template <typename S>
+requires(kLaneCount<S> > 1) inline S CubeRoot(S x) {
+  S root = internal::FastCubeRoot(x);
+  const internal::LaneBits<S> biased = std::bit_cast<internal::LaneBits<S>>(x) >> 52;
+  for (int l = 0; l < kLaneCount<S>; ++l) {
     if (biased[l] < internal::kCubeRootLowestExponent ||
         biased[l] > internal::kCubeRootHighestExponent) {
       root[l] = std::cbrt(x[l]);

@@ -14,11 +14,32 @@
 
 namespace getme {
 
-// Two doubles: one SSE2 register on every x86-64. Four would need AVX, which the build does not
-// assume (and 32-byte vectors passed without AVX change the ABI).
+// kWidth doubles side by side as one GCC vector. Every operation the kernels apply to them acts
+// lane by lane, so the width changes only how many elements one pass of a kernel evaluates, never
+// the bits of any element's result.
+// (Typedefs in a class template: GCC ignores vector_size on an alias template with a dependent
+// size.)
+template <int kWidth>
+struct LaneTypes {
+  typedef double Values __attribute__((vector_size(kWidth * sizeof(double))));
+  typedef std::int64_t Mask __attribute__((vector_size(kWidth * sizeof(double))));
+  typedef std::uint64_t Bits __attribute__((vector_size(kWidth * sizeof(double))));
+};
+template <int kWidth>
+using LanesOf = typename LaneTypes<kWidth>::Values;
+template <int kWidth>
+using LaneMaskOf = typename LaneTypes<kWidth>::Mask;
+
+// The reference width: two doubles, one SSE2 register on every x86-64, which the build assumes.
+// The wider passes (4 lanes with AVX2, 8 with AVX-512) are compiled and chosen at run time in
+// smoothing/element_passes_dispatch.cc and tested against this one.
 inline constexpr int kLanes = 2;
-using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
-using LaneMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
+using Lanes = LanesOf<kLanes>;
+using LaneMask = LaneMaskOf<kLanes>;
+
+// The number of elements one value of lane type S holds: 1 for double.
+template <typename S>
+inline constexpr int kLaneCount = static_cast<int>(sizeof(S) / sizeof(double));
 
 template <typename S>
 S Splat(double value) {
@@ -26,21 +47,23 @@ S Splat(double value) {
     return value;
   } else {
     S lanes;
-    for (int l = 0; l < kLanes; ++l) lanes[l] = value;
+    for (int l = 0; l < kLaneCount<S>; ++l) lanes[l] = value;
     return lanes;
   }
 }
 
 inline double Sqrt(double x) { return std::sqrt(x); }
-inline Lanes Sqrt(Lanes x) {
-  Lanes root;
-  for (int l = 0; l < kLanes; ++l) root[l] = std::sqrt(x[l]);  // one sqrtpd
+template <typename S>
+requires(kLaneCount<S> > 1) S Sqrt(S x) {
+  S root;
+  for (int l = 0; l < kLaneCount<S>; ++l) root[l] = std::sqrt(x[l]);  // one (v)sqrtpd
   return root;
 }
 
 // condition ? a : b, lane by lane.
 inline double Select(bool condition, double a, double b) { return condition ? a : b; }
-inline Lanes Select(LaneMask condition, Lanes a, Lanes b) { return condition ? a : b; }
+template <typename Mask, typename S>
+requires(kLaneCount<S> > 1) S Select(Mask condition, S a, S b) { return condition ? a : b; }
 
 // A condition true in every lane.
 template <typename S>
@@ -54,7 +77,8 @@ auto AllLanes() {
 
 // Both conditions, lane by lane.
 inline bool Both(bool a, bool b) { return a && b; }
-inline LaneMask Both(LaneMask a, LaneMask b) { return a & b; }
+template <typename Mask>
+requires(!std::is_same_v<Mask, bool>) Mask Both(Mask a, Mask b) { return a & b; }
 
 // A point or vector in 3D whose coordinates are lanes. The operations evaluate in the order
 // Eigen's fixed-size 3-vectors use (sums left to right), so Point3<double> results equal the

@@ -11,25 +11,14 @@
 namespace getme {
 namespace {
 
-// Nodes per ParallelFor chunk of the node pass: a node costs only its corner sums, so chunks are
-// small enough that two threads get a dozen each on a 100k-element mesh (25k nodes).
+// Nodes per ParallelFor chunk of the node pass: a node costs only its sums, so chunks are small
+// enough that two threads get a dozen each on a 100k-element mesh (25k nodes).
 constexpr std::int64_t kNodeGrain = 1024;
-
-// w_j = (1 − q_j)^η (Step 2.1). The paper's η = 1/4 (and 1/2, 1) as square roots, which act on
-// whole lanes and are correctly rounded; other exponents through libm's pow, lane by lane.
-Lanes WeightOfElement(Lanes defect, double eta) {
-  if (eta == 0.25) return Sqrt(Sqrt(defect));
-  if (eta == 0.5) return Sqrt(defect);
-  if (eta == 1.0) return defect;
-  Lanes weight;
-  for (int l = 0; l < kLanes; ++l) weight[l] = std::pow(defect[l], eta);
-  return weight;
-}
 
 }  // namespace
 
 SimultaneousIteration::SimultaneousIteration(const Mesh& mesh)
-    : corner_xyz_(3 * mesh.corner_count()), element_weight_(mesh.element_count()) {
+    : tiles_(mesh), node_sums_(mesh.node_count()) {
   previous_.x.resize(mesh.node_count());
   previous_.y.resize(mesh.node_count());
   previous_.z.resize(mesh.node_count());
@@ -45,55 +34,46 @@ SimultaneousIteration::Outcome SimultaneousIteration::Run(SmoothingContext& cont
   return {context.Summarize(), reverted};
 }
 
-// Step 1: transform every element (eq. 4 with the quality-dependent σ_j of Step 1.1), scale and
-// relax it (Step 1.2), and store its weighted new nodes w_j·p'_{i,j} per corner and w_j.
+// Step 1 with Step 2's sums: transform every element (eq. 4 with the quality-dependent σ_j of
+// Step 1.1), scale and relax it (Step 1.2), and add w_j·p'_{i,j} and w_j to its nodes' sums.
+// Tiles of one colour share no node, so they run in parallel; colours run one after another, and
+// the tiles that found no colour last, in order, on one thread. Every node so receives its
+// contributions in the same order for every thread count (parallel/element_tiles.h).
 void SimultaneousIteration::TransformAll(const SmoothingContext& context) {
-  ParallelForEachBlock(
-      context.mesh, context.pool,
-      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
-        TransformRange<kType>(context, block, begin, end);
-      });
+  for (int c = 0; c < tiles_.colour_count(); ++c) {
+    const std::span<const ElementTiles::Tile> tiles = tiles_.colour(c);
+    context.pool.ParallelFor(static_cast<std::int64_t>(tiles.size()), 1,
+                             [&](std::int64_t begin, std::int64_t end) {
+                               for (std::int64_t t = begin; t < end; ++t) {
+                                 TransformTile(context, tiles[t]);
+                               }
+                             });
+  }
+  for (const ElementTiles::Tile& tile : tiles_.serial()) TransformTile(context, tile);
 }
 
-// Block entries [begin, end), kLanes elements at a time (lanes.h).
-template <ElementType kType>
-void SimultaneousIteration::TransformRange(const SmoothingContext& context,
-                                           const ElementBlock& block, std::int64_t begin,
-                                           std::int64_t end) {
-  constexpr int kNodes = ElementTable<kType>::kNodes;
+// One tile, context.passes.lanes elements at a time (element_passes.h).
+void SimultaneousIteration::TransformTile(const SmoothingContext& context,
+                                          const ElementTiles::Tile& tile) {
   const Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
-  const double sigma_min = params.simultaneous_sigma_min[TypeIndex(kType)];
-  const double sigma_span = params.simultaneous_sigma_max[TypeIndex(kType)] - sigma_min;
-  const std::int64_t corner_base = mesh.corner_offset(kType);
-  for (std::int64_t i = begin; i < end; i += kLanes) {
-    const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
-    Lanes q{};
-    for (int l = 0; l < kLanes; ++l) {
-      q[l] = std::max(0.0, context.quality[block.elements[i + std::min(l, count - 1)]]);
-    }
-    const auto moved = RegularizingStep<kType, Lanes>(
-        GatherLanes<kType>(mesh.x(), mesh.y(), mesh.z(), block.nodes.data() + i * kNodes, count),
-        sigma_min + sigma_span * (1.0 - q), params.simultaneous_rho);
-    const Lanes weights = WeightOfElement(1.0 - q, params.simultaneous_eta);
-    for (int l = 0; l < count; ++l) {
-      const double weight = weights[l];
-      element_weight_[block.elements[i + l]] = weight;
-      double* out = corner_xyz_.data() + 3 * (corner_base + (i + l) * kNodes);
-      for (int k = 0; k < kNodes; ++k) {
-        out[3 * k + 0] = weight * moved[k].x[l];
-        out[3 * k + 1] = weight * moved[k].y[l];
-        out[3 * k + 2] = weight * moved[k].z[l];
-      }
-    }
-  }
+  const int type = TypeIndex(tile.type);
+  TransformPassSettings settings;
+  settings.sigma_min = params.simultaneous_sigma_min[type];
+  settings.sigma_span = params.simultaneous_sigma_max[type] - settings.sigma_min;
+  settings.rho = params.simultaneous_rho;
+  settings.eta = params.simultaneous_eta;
+  settings.quality = context.quality.data();
+  // Written only at this tile's nodes, which no tile running meanwhile shares.
+  settings.sums = node_sums_.data();
+  context.passes.scatter_transform[type]({mesh.x(), mesh.y(), mesh.z(), tiles_.nodes(tile.type),
+                                          tiles_.elements(tile.type), tile.begin, tile.end},
+                                         settings);
 }
 
-// Step 2: p'_i = Σ w_j p'_{i,j} / Σ w_j over the node's elements, summed in the fixed corner
-// order of the node's row so the result does not depend on the thread count. A node's corner row
-// and element row list the same elements in the same (canonical) order, so the k-th corner
-// belongs to the k-th element. Every node's position is kept in previous_ on the way (Step 3 and
-// the caller's best state need it).
+// Step 2: p'_i = Σ w_j p'_{i,j} / Σ w_j, from the sums Step 1 left, which are then cleared for
+// the next iteration. Every node's position is kept in previous_ on the way (Step 3 and the
+// caller's best state need it).
 void SimultaneousIteration::UpdateNodes(SmoothingContext& context) {
   context.pool.ParallelFor(
       context.mesh.node_count(), kNodeGrain,
@@ -103,7 +83,6 @@ void SimultaneousIteration::UpdateNodes(SmoothingContext& context) {
 void SimultaneousIteration::UpdateNodeRange(SmoothingContext& context, std::int64_t begin,
                                             std::int64_t end) {
   Mesh& mesh = context.mesh;
-  const CompressedRows& corner_rows = mesh.node_corners();
   const auto x = mesh.x();
   const auto y = mesh.y();
   const auto z = mesh.z();
@@ -111,25 +90,16 @@ void SimultaneousIteration::UpdateNodeRange(SmoothingContext& context, std::int6
     previous_.x[node] = x[node];
     previous_.y[node] = y[node];
     previous_.z[node] = z[node];
-    if (!context.movable[node]) continue;
-    const std::span<const std::int32_t> corners = corner_rows.Row(node);
-    const ElementId* elements = mesh.node_elements(node).data();
-    double sx = 0.0, sy = 0.0, sz = 0.0, sw = 0.0;
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      const double* weighted = corner_xyz_.data() + 3 * static_cast<std::int64_t>(corners[k]);
-      sw += element_weight_[elements[k]];
-      sx += weighted[0];
-      sy += weighted[1];
-      sz += weighted[2];
-    }
+    const NodeSum sum = node_sums_[node];
+    node_sums_[node] = NodeSum{};
     // Σ w_j = 0: all adjacent elements are regular, the node is already optimal (Sec. 3.1).
-    if (sw > 0.0) {
-      const Vec3 placed = context.Placed(static_cast<NodeId>(node), Vec3(sx / sw, sy / sw, sz / sw),
-                                         Vec3(x[node], y[node], z[node]));
-      x[node] = placed[0];
-      y[node] = placed[1];
-      z[node] = placed[2];
-    }
+    if (!context.movable[node] || !(sum.w > 0.0)) continue;
+    const Vec3 placed =
+        context.Placed(static_cast<NodeId>(node), Vec3(sum.x / sum.w, sum.y / sum.w, sum.z / sum.w),
+                       Vec3(x[node], y[node], z[node]));
+    x[node] = placed[0];
+    y[node] = placed[1];
+    z[node] = placed[2];
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include "getme/mesh/mesh.h"
 #include "getme/mesh/node_positions.h"
+#include "getme/parallel/element_tiles.h"
+#include "getme/smoothing/element_passes.h"
 #include "getme/smoothing/smoothing_context.h"
 
 namespace getme {
@@ -29,15 +31,15 @@ class SimultaneousIteration {
 
  private:
   void TransformAll(const SmoothingContext& context);
-  template <ElementType kType>
-  void TransformRange(const SmoothingContext& context, const ElementBlock& block,
-                      std::int64_t begin, std::int64_t end);
+  void TransformTile(const SmoothingContext& context, const ElementTiles::Tile& tile);
   void UpdateNodes(SmoothingContext& context);
   void UpdateNodeRange(SmoothingContext& context, std::int64_t begin, std::int64_t end);
   std::int64_t RepairInvalid(SmoothingContext& context);
 
-  std::vector<double> corner_xyz_;      // w_j·p'_{i,j} per corner (Mesh::node_corners numbering)
-  std::vector<double> element_weight_;  // w_j per element
+  // The elements' visiting order and its node-disjoint tiles, built once per phase.
+  ElementTiles tiles_;
+  // Step 2's Σ w_j p'_{i,j} and Σ w_j per node, zero between iterations.
+  std::vector<NodeSum> node_sums_;
   NodePositions previous_;
 };
 

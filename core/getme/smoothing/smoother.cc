@@ -8,6 +8,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "getme/elements/vec3.h"
+#include "getme/smoothing/element_passes_dispatch.h"
 #include "getme/smoothing/laplace_smoother.h"
 #include "getme/smoothing/layer_phase.h"
 #include "getme/smoothing/polish.h"
@@ -164,6 +165,8 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
                                        const CancellationToken* cancel,
                                        const BoundarySlide* slide) {
   if (auto status = params.Validate(); !status.ok()) return status;
+  const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(params.kernel_lanes);
+  if (!passes.ok()) return passes.status();
   if ((params.slide_boundary || params.keep_layers) && slide == nullptr) {
     return absl::InvalidArgumentError(
         absl::StrCat(params.slide_boundary ? "slide_boundary" : "keep_layers",
@@ -179,6 +182,7 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
   ThreadPool pool(params.threads);
   SmoothingResult result;
   result.threads = pool.thread_count();
+  result.kernel_lanes = (*passes)->lanes;
   result.before = EvaluateMeshQuality(mesh, pool);
   SmoothingContext context(mesh, params, pool, progress, cancel, slide);
   // Untangling with untangle_free_boundary may move boundary nodes of invalid elements: the check

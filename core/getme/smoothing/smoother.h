@@ -43,6 +43,9 @@ struct SmoothingResult {
   std::int64_t iterations_layers = 0;  // passes over the kept columns (keep_layers)
   double seconds = 0.0;
   int threads = 1;
+  // Doubles per vector in the whole-mesh element passes (SmoothingParams::kernel_lanes resolved
+  // on this machine): 2, 4 or 8. Like `threads`, it changes the time, not the result.
+  int kernel_lanes = 2;
   // With a sliding boundary or kept layers only.
   std::optional<BoundarySlideSummary> boundary_slide;
 };

@@ -7,6 +7,15 @@
 #include "getme/parallel/block_loops.h"
 
 namespace getme {
+namespace {
+
+const ElementPasses& PassesOrReference(int lanes) {
+  const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
+  return passes.ok() ? **passes : **ElementPassesFor(kLanes);
+}
+
+}  // namespace
+
 SmoothingContext::SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_in,
                                    ThreadPool& pool_in, const ProgressCallback& progress_in,
                                    const CancellationToken* cancel_in,
@@ -17,7 +26,8 @@ SmoothingContext::SmoothingContext(Mesh& mesh_in, const SmoothingParams& params_
       progress(progress_in),
       cancel(cancel_in),
       start(std::chrono::steady_clock::now()),
-      slide(slide_in) {
+      slide(slide_in),
+      passes(PassesOrReference(params_in.kernel_lanes)) {
   movable.resize(mesh.node_count());
   sliding.assign(mesh.node_count(), 0);
   column_movable.assign(mesh.node_count(), 0);
@@ -52,17 +62,13 @@ double SmoothingContext::ElapsedSeconds() const {
 void SmoothingContext::RefreshQuality() {
   quality.resize(mesh.element_count());
   const Mesh& m = mesh;
-  // kLanes elements at a time (lanes.h): the same bits as one at a time.
+  // passes.lanes elements at a time: the same bits as one at a time (element_passes.h).
   ParallelForEachBlock(
       m, pool,
       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
-        constexpr int kNodes = ElementTable<kType>::kNodes;
-        for (std::int64_t i = begin; i < end; i += kLanes) {
-          const int count = static_cast<int>(std::min<std::int64_t>(kLanes, end - i));
-          const Lanes q = MeanRatioOrInvalid<kType, Lanes>(
-              GatherLanes<kType>(m.x(), m.y(), m.z(), block.nodes.data() + i * kNodes, count));
-          for (int l = 0; l < count; ++l) quality[block.elements[i + l]] = q[l];
-        }
+        passes.mean_ratio[TypeIndex(kType)](
+            {m.x(), m.y(), m.z(), block.nodes.data(), block.elements.data(), begin, end},
+            quality.data());
       });
 }
 

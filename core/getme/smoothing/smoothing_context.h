@@ -10,6 +10,7 @@
 #include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
 #include "getme/smoothing/boundary_slide.h"
+#include "getme/smoothing/element_passes_dispatch.h"
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoother.h"
 #include "getme/smoothing/smoothing_params.h"
@@ -33,6 +34,10 @@ struct SmoothingContext {
   const CancellationToken* cancel;
   std::chrono::steady_clock::time_point start;
   const BoundarySlide* slide;
+  // The whole-mesh element passes of params.kernel_lanes lanes (element_passes_dispatch.h); the
+  // reference two lanes if this machine cannot run that width (Smooth() refuses such params
+  // before it builds a context).
+  const ElementPasses& passes;
   // 1 for nodes the smoothers may move: not caller-fixed, and not boundary if fix_boundary
   // unless it slides.
   std::vector<std::uint8_t> movable;

@@ -171,6 +171,10 @@ absl::Status SmoothingParams::Validate() const {
     return OutOfRange("polish_backtracking_steps", polish_backtracking_steps, "in [0, 30]");
   }
   if (threads < 0 || threads > 1024) return OutOfRange("threads", threads, "in [0, 1024]");
+  // Whether this machine runs the width is Smooth()'s FailedPrecondition (element_passes_dispatch).
+  if (kernel_lanes != 0 && kernel_lanes != 2 && kernel_lanes != 4 && kernel_lanes != 8) {
+    return OutOfRange("kernel_lanes", kernel_lanes, "0, 2, 4 or 8");
+  }
   if (untangle_free_boundary && !untangle) {
     // Asking to free the boundary for a phase that does not run is a caller mistake, not a no-op.
     return absl::InvalidArgumentError(

@@ -179,6 +179,10 @@ struct SmoothingParams {
   // boundary moves the wall the heights are measured from.
   bool keep_layers = false;
   int threads = 0;  // 0 = hardware concurrency; results do not depend on it
+  // Issue 16: doubles per vector in the whole-mesh element passes (element_passes.h): 0 = the
+  // widest this machine runs (8 with AVX-512, 4 with AVX2, else 2), or 2, 4 or 8 exactly. Results
+  // do not depend on it, so it is a benchmark's and a test's knob, not on the wire.
+  int kernel_lanes = 0;
 
   absl::Status Validate() const;
 

@@ -1,0 +1,115 @@
+#pragma once
+
+// The two passes over every element that a simultaneous iteration (Sec. 3.1) spends its time in:
+// the mean ratio of each element (Def. 3, eq. 10, with validity, Def. 2) and the regularizing
+// step with its weight (Step 1: eqs. 4, 8, 11; Step 2.1: w_j = (1 − q_j)^η). Both run over one
+// range of one type block, kWidth elements per kernel call (lanes.h).
+//
+// They are templates over the width so that one source gives the reference two-lane pass
+// (compiled for the baseline x86-64) and the 4- and 8-lane passes that
+// element_passes_dispatch.cc compiles for AVX2 and AVX-512 and picks at run time. Each lane
+// computes exactly what the double kernels compute for its element, so every width writes the
+// same bits (tests/elements/element_passes_test.cc).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+
+#include "getme/elements/element_quality.h"
+#include "getme/elements/lanes.h"
+#include "getme/elements/transform.h"
+#include "getme/elements/vec3.h"
+
+namespace getme {
+
+// Entries [begin, end) of one type block, with the mesh's coordinates.
+struct BlockRange {
+  std::span<const double> x, y, z;
+  const NodeId* nodes = nullptr;        // the block's node ids, kNodes per entry
+  const ElementId* elements = nullptr;  // the block's element ids
+  std::int64_t begin = 0;
+  std::int64_t end = 0;
+};
+
+// Step 2's running sums of one node: Σ_j w_j p'_{i,j} and Σ_j w_j.
+struct NodeSum {
+  double x = 0.0, y = 0.0, z = 0.0, w = 0.0;
+};
+
+// What Step 1 of the simultaneous substep needs besides the nodes, for one type.
+struct TransformPassSettings {
+  double sigma_min = 0.0;  // σ_j = sigma_min + sigma_span · (1 − q_j) (Step 1.1)
+  double sigma_span = 0.0;
+  double rho = 0.0;                 // relaxation ρ (eq. 11)
+  double eta = 0.0;                 // weight exponent η (Step 2.1)
+  const double* quality = nullptr;  // per element; an invalid element (−1) counts as q = 0
+  NodeSum* sums = nullptr;          // per node: the contributions are added here
+};
+
+// w_j = (1 − q_j)^η (Step 2.1). The paper's η = 1/4 (and 1/2, 1) as square roots, which act on
+// whole lanes and are correctly rounded; other exponents through libm's pow, lane by lane.
+template <typename S>
+S WeightOfElement(S defect, double eta) {
+  if (eta == 0.25) return Sqrt(Sqrt(defect));
+  if (eta == 0.5) return Sqrt(defect);
+  if (eta == 1.0) return defect;
+  if constexpr (std::is_same_v<S, double>) {
+    return std::pow(defect, eta);
+  } else {
+    S weight;
+    for (int l = 0; l < kLaneCount<S>; ++l) weight[l] = std::pow(defect[l], eta);
+    return weight;
+  }
+}
+
+// quality[element] = MeanRatioOrInvalid of every element of the range.
+template <ElementType kType, int kWidth>
+void MeanRatioPass(const BlockRange& range, double* quality) {
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  for (std::int64_t i = range.begin; i < range.end; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, range.end - i));
+    const LanesOf<kWidth> q = MeanRatioOrInvalid<kType, LanesOf<kWidth>>(
+        GatherLanes<kType, kWidth>(range.x, range.y, range.z, range.nodes + i * kNodes, count));
+    for (int l = 0; l < count; ++l) quality[range.elements[i + l]] = q[l];
+  }
+}
+
+// Step 1 on the entries [range.begin, range.end) of one type block (or of a reordering of it,
+// parallel/element_tiles.h): transform each element with its σ_j, scale and relax it, and add
+// w_j·p'_{i,j} and w_j to the sums of its nodes (Step 2's numerators and denominators). The
+// elements add in range order, each its nodes in node order, so a node's sums are the same bits
+// for every width; the caller makes sure no other thread adds to these nodes meanwhile.
+template <ElementType kType, int kWidth>
+void ScatterTransformPass(const BlockRange& range, const TransformPassSettings& settings) {
+  using S = LanesOf<kWidth>;
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  for (std::int64_t i = range.begin; i < range.end; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, range.end - i));
+    // Lanes past `count` repeat the last element; their results are dropped.
+    S q{};
+    for (int l = 0; l < kWidth; ++l) {
+      q[l] = std::max(0.0, settings.quality[range.elements[i + std::min(l, count - 1)]]);
+    }
+    const NodeId* element_nodes = range.nodes + i * kNodes;
+    const auto moved = RegularizingStep<kType, S>(
+        GatherLanes<kType, kWidth>(range.x, range.y, range.z, element_nodes, count),
+        settings.sigma_min + settings.sigma_span * (1.0 - q), settings.rho);
+    const S weights = WeightOfElement(1.0 - q, settings.eta);
+    std::array<Point3<S>, kNodes> weighted;
+    for (int k = 0; k < kNodes; ++k) weighted[k] = weights * moved[k];
+    for (int l = 0; l < count; ++l) {
+      for (int k = 0; k < kNodes; ++k) {
+        NodeSum& sum = settings.sums[element_nodes[l * kNodes + k]];
+        sum.x += weighted[k].x[l];
+        sum.y += weighted[k].y[l];
+        sum.z += weighted[k].z[l];
+        sum.w += weights[l];
+      }
+    }
+  }
+}
+
+}  // namespace getme

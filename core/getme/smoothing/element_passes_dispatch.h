@@ -1,0 +1,34 @@
+#pragma once
+
+// Run-time choice of the element passes' width (element_passes.h): 2 lanes (the reference, any
+// x86-64), 4 (AVX2) or 8 (AVX-512), by what the machine that runs them supports. Google Highway
+// detects the CPU's and the OS's support and compiles the wider passes in their own target
+// namespaces with the target's instruction set (docs/design.md, "Wide kernels").
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "absl/status/statusor.h"
+#include "getme/elements/element_type.h"
+#include "getme/smoothing/element_passes.h"
+
+namespace getme {
+
+struct ElementPasses {
+  int lanes = 0;
+  // Indexed by TypeIndex.
+  std::array<void (*)(const BlockRange&, double* quality), kElementTypeCount> mean_ratio{};
+  std::array<void (*)(const BlockRange&, const TransformPassSettings&), kElementTypeCount>
+      scatter_transform{};
+};
+
+// The passes of `lanes` lanes (2, 4 or 8), or with lanes = 0 the widest this machine runs.
+// FailedPrecondition when this machine cannot run that width; InvalidArgument for any other
+// number.
+absl::StatusOr<const ElementPasses*> ElementPassesFor(int lanes);
+
+// The widths this machine runs, narrowest first (always starts with 2).
+std::vector<int> SupportedLaneWidths();
+
+}  // namespace getme
