@@ -1,9 +1,8 @@
-// Topology of a 2×2×2 block of unit hexahedra (27 nodes): boundary, node→element and
-// node→corner adjacency, element neighbours.
+// Topology of a 2×2×2 block of unit hexahedra (27 nodes): boundary, node→element adjacency,
+// element neighbours.
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <vector>
 
 #include "getme/mesh/mesh.h"
@@ -69,27 +68,6 @@ TEST_F(HexBlockTopology, EveryElementNeighboursTheOtherSeven) {
     const std::span<const ElementId> neighbours = mesh_.element_neighbours(e);
     EXPECT_EQ(std::vector<ElementId>(neighbours.begin(), neighbours.end()), others)
         << "element " << e;
-  }
-}
-
-TEST_F(HexBlockTopology, NodeCornersMapBackToTheirNode) {
-  const std::int64_t offset = mesh_.corner_offset(ElementType::kHexahedron);
-  const ElementBlock& block = mesh_.block(ElementType::kHexahedron);
-  EXPECT_EQ(mesh_.corner_count(), 64);
-  for (NodeId node = 0; node < 27; ++node) {
-    const std::span<const std::int32_t> corners = mesh_.node_corners().Row(node);
-    ASSERT_EQ(corners.size(), mesh_.node_elements(node).size()) << "node " << node;
-    std::vector<ElementId> corner_elements;
-    for (std::int32_t corner : corners) {
-      ASSERT_GE(corner - offset, 0);
-      EXPECT_EQ(block.nodes[corner - offset], node) << "corner " << corner;
-      corner_elements.push_back(block.elements[(corner - offset) / 8]);
-    }
-    // The corners of a node are its elements' corners, one per element.
-    std::sort(corner_elements.begin(), corner_elements.end());
-    const std::span<const ElementId> elements = mesh_.node_elements(node);
-    EXPECT_EQ(corner_elements, std::vector<ElementId>(elements.begin(), elements.end()))
-        << "node " << node;
   }
 }
 

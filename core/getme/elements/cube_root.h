@@ -23,7 +23,6 @@
 // which a valid element of a sane mesh produces — the argument goes to std::cbrt, lane by lane,
 // so every input still gets libm's answer.
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
@@ -61,19 +60,21 @@ inline constexpr double kCubeRootSeed[] = {
 inline constexpr double kCubeRootOfTwo = 1.2599210498948732;   // ∛2
 inline constexpr double kCubeRootOfFour = 1.5874010519681994;  // ∛4
 
+// __builtin_bit_cast rather than std::bit_cast: a builtin is never a call, and no call that passes
+// lanes may be left (GETME_LANE_INLINE, lanes.h).
 template <typename S>
-[[gnu::always_inline]] inline S FastCubeRoot(S x) {
+GETME_LANE_INLINE S FastCubeRoot(S x) {
   using Bits = CubeRootBits<S>;
   constexpr std::uint64_t kMantissa = (std::uint64_t{1} << 52) - 1;
   constexpr std::uint64_t kExponentOfOne = std::uint64_t{1023} << 52;
-  const Bits bits = std::bit_cast<Bits>(x);
+  const Bits bits = __builtin_bit_cast(Bits, x);
   const Bits biased = bits >> 52;
   // x = m · 2^(biased − 1023) and biased − 1023 = 3q + r: with t = biased + 2046 (so that
   // t − 3·1023 = biased − 1023), q = ⌊t/3⌋ − 1023. ⌊t/3⌋ = (t · 43691) >> 17 for t < 2^16.
   const Bits t = biased + 2046;
   const Bits third = (t * 43691) >> 17;
   const Bits remainder = t - third * 3;
-  const S u = std::bit_cast<S>((bits & kMantissa) | kExponentOfOne) - 1.5;
+  const S u = __builtin_bit_cast(S, (bits & kMantissa) | kExponentOfOne) - 1.5;
   // Estrin's scheme rather than Horner's: three levels of dependent multiplies instead of six,
   // which is what the latency-bound node steps of the polish wait for.
   const S u2 = u * u;
@@ -85,7 +86,7 @@ template <typename S>
   seed = seed * Select(remainder == 0, Splat<S>(1.0),
                        Select(remainder == 1, Splat<S>(kCubeRootOfTwo), Splat<S>(kCubeRootOfFour)));
   // · 2^q by adding q to the exponent field (modulo 2^64, so a negative q subtracts).
-  seed = std::bit_cast<S>(std::bit_cast<Bits>(seed) + ((third - 1023) << 52));
+  seed = __builtin_bit_cast(S, __builtin_bit_cast(Bits, seed) + ((third - 1023) << 52));
   const S cube = seed * seed * seed;
   return seed + seed * ((x - cube) / (cube + cube + x));
 }
@@ -94,7 +95,7 @@ template <typename S>
 
 // ∛x, within one ulp of the exact root; the same bits for a double and for each lane of Lanes.
 inline double CubeRoot(double x) {
-  const std::uint64_t biased = std::bit_cast<std::uint64_t>(x) >> 52;
+  const std::uint64_t biased = __builtin_bit_cast(std::uint64_t, x) >> 52;
   if (biased < internal::kCubeRootLowestExponent || biased > internal::kCubeRootHighestExponent) {
     return std::cbrt(x);  // also every negative x: its sign bit makes `biased` ≥ 2048
   }
@@ -102,9 +103,9 @@ inline double CubeRoot(double x) {
 }
 
 template <typename S>
-requires(kLaneCount<S> > 1) inline S CubeRoot(S x) {
+requires(kLaneCount<S> > 1) GETME_LANE_INLINE S CubeRoot(S x) {
   S root = internal::FastCubeRoot(x);
-  const internal::LaneBits<S> biased = std::bit_cast<internal::LaneBits<S>>(x) >> 52;
+  const internal::LaneBits<S> biased = __builtin_bit_cast(internal::LaneBits<S>, x) >> 52;
   for (int l = 0; l < kLaneCount<S>; ++l) {
     if (biased[l] < internal::kCubeRootLowestExponent ||
         biased[l] > internal::kCubeRootHighestExponent) {

@@ -41,7 +41,7 @@ inline constexpr double kInvalidQuality = -1.0;
 // (1 − q)^η NaN (docs/paper-notes.md#rounding-of-the-mean-ratio). Generic over the lane type S
 // (lanes.h).
 template <ElementType kType, typename S>
-inline S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
+GETME_LANE_INLINE S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
   S sum = Splat<S>(0.0);

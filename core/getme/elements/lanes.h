@@ -41,8 +41,18 @@ using LaneMask = LaneMaskOf<kLanes>;
 template <typename S>
 inline constexpr int kLaneCount = static_cast<int>(sizeof(S) / sizeof(double));
 
+// Every function that takes or returns lanes is forced inline. The 4- and 8-lane passes are
+// compiled inside Highway's AVX2 and AVX-512 regions (smoothing/element_passes_dispatch.cc), but
+// these templates are defined outside them: a call that stayed a call would pass a 32- or 64-byte
+// vector between code compiled with and without AVX, whose calling conventions differ, and the
+// upper lanes would arrive as garbage. GCC inlines them anyway ([[gnu::flatten]] on the passes);
+// clang at the sanitizer stages' -O1 did not, and the 4- and 8-lane mean ratios read zeros in
+// their upper lanes. tests/elements/element_passes_test.cc, run in the clang builds too, is the
+// check (clang's -Wpsabi cannot be: it warns at every such call before inlining).
+#define GETME_LANE_INLINE [[gnu::always_inline]] inline
+
 template <typename S>
-S Splat(double value) {
+GETME_LANE_INLINE S Splat(double value) {
   if constexpr (std::is_same_v<S, double>) {
     return value;
   } else {
@@ -54,7 +64,7 @@ S Splat(double value) {
 
 inline double Sqrt(double x) { return std::sqrt(x); }
 template <typename S>
-requires(kLaneCount<S> > 1) S Sqrt(S x) {
+requires(kLaneCount<S> > 1) GETME_LANE_INLINE S Sqrt(S x) {
   S root;
   for (int l = 0; l < kLaneCount<S>; ++l) root[l] = std::sqrt(x[l]);  // one (v)sqrtpd
   return root;
@@ -63,11 +73,13 @@ requires(kLaneCount<S> > 1) S Sqrt(S x) {
 // condition ? a : b, lane by lane.
 inline double Select(bool condition, double a, double b) { return condition ? a : b; }
 template <typename Mask, typename S>
-requires(kLaneCount<S> > 1) S Select(Mask condition, S a, S b) { return condition ? a : b; }
+requires(kLaneCount<S> > 1) GETME_LANE_INLINE S Select(Mask condition, S a, S b) {
+  return condition ? a : b;
+}
 
 // A condition true in every lane.
 template <typename S>
-auto AllLanes() {
+GETME_LANE_INLINE auto AllLanes() {
   if constexpr (std::is_same_v<S, double>) {
     return true;
   } else {
@@ -78,7 +90,7 @@ auto AllLanes() {
 // Both conditions, lane by lane.
 inline bool Both(bool a, bool b) { return a && b; }
 template <typename Mask>
-requires(!std::is_same_v<Mask, bool>) Mask Both(Mask a, Mask b) { return a & b; }
+requires(!std::is_same_v<Mask, bool>) GETME_LANE_INLINE Mask Both(Mask a, Mask b) { return a & b; }
 
 // A point or vector in 3D whose coordinates are lanes. The operations evaluate in the order
 // Eigen's fixed-size 3-vectors use (sums left to right), so Point3<double> results equal the
@@ -87,7 +99,7 @@ template <typename S>
 struct Point3 {
   S x, y, z;
 
-  Point3& operator+=(const Point3& other) {
+  GETME_LANE_INLINE Point3& operator+=(const Point3& other) {
     x += other.x;
     y += other.y;
     z += other.z;
@@ -96,40 +108,40 @@ struct Point3 {
 };
 
 template <typename S>
-Point3<S> operator+(const Point3<S>& a, const Point3<S>& b) {
+GETME_LANE_INLINE Point3<S> operator+(const Point3<S>& a, const Point3<S>& b) {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <typename S>
-Point3<S> operator-(const Point3<S>& a, const Point3<S>& b) {
+GETME_LANE_INLINE Point3<S> operator-(const Point3<S>& a, const Point3<S>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 template <typename S, typename Factor>
-Point3<S> operator*(const Factor& factor, const Point3<S>& a) {
+GETME_LANE_INLINE Point3<S> operator*(const Factor& factor, const Point3<S>& a) {
   return {factor * a.x, factor * a.y, factor * a.z};
 }
 template <typename S, typename Factor>
-Point3<S> operator*(const Point3<S>& a, const Factor& factor) {
+GETME_LANE_INLINE Point3<S> operator*(const Point3<S>& a, const Factor& factor) {
   return {a.x * factor, a.y * factor, a.z * factor};
 }
 template <typename S, typename Divisor>
-Point3<S> operator/(const Point3<S>& a, const Divisor& divisor) {
+GETME_LANE_INLINE Point3<S> operator/(const Point3<S>& a, const Divisor& divisor) {
   return {a.x / divisor, a.y / divisor, a.z / divisor};
 }
 
 template <typename S>
-Point3<S> Cross(const Point3<S>& a, const Point3<S>& b) {
+GETME_LANE_INLINE Point3<S> Cross(const Point3<S>& a, const Point3<S>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <typename S>
-S Dot(const Point3<S>& a, const Point3<S>& b) {
+GETME_LANE_INLINE S Dot(const Point3<S>& a, const Point3<S>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <typename S>
-S SquaredNorm(const Point3<S>& a) {
+GETME_LANE_INLINE S SquaredNorm(const Point3<S>& a) {
   return a.x * a.x + a.y * a.y + a.z * a.z;
 }
 template <typename S>
-S Norm(const Point3<S>& a) {
+GETME_LANE_INLINE S Norm(const Point3<S>& a) {
   return Sqrt(SquaredNorm(a));
 }
 

@@ -25,7 +25,7 @@ constexpr double kPrismTauSigma = 0.5659119256652702;  // √2 / 39^(1/4)
 
 // Def. 1: p'_k = b_k + σ n_k / sqrt(|n_k|) on the dual element (eq. 1) of E.
 template <ElementType kType, typename S>
-inline LaneNodes<kType, S> TransformElement(const LaneNodes<kType, S>& p, S sigma) {
+GETME_LANE_INLINE LaneNodes<kType, S> TransformElement(const LaneNodes<kType, S>& p, S sigma) {
   using Table = ElementTable<kType>;
   constexpr int kDualNodes = static_cast<int>(Table::kFaces.size());
   // eq. (1): dual nodes are the face centroids.
@@ -70,14 +70,14 @@ inline LaneNodes<kType, S> TransformElement(const LaneNodes<kType, S>& p, S sigm
 }
 
 template <ElementType kType, typename S>
-inline S MeanEdgeLength(const LaneNodes<kType, S>& p) {
+GETME_LANE_INLINE S MeanEdgeLength(const LaneNodes<kType, S>& p) {
   S sum = Splat<S>(0.0);
   for (const auto& edge : ElementTable<kType>::kEdges) sum += Norm(p[edge[1]] - p[edge[0]]);
   return sum * (1.0 / static_cast<double>(ElementTable<kType>::kEdges.size()));
 }
 
 template <ElementType kType, typename S>
-inline Point3<S> Centroid(const LaneNodes<kType, S>& p) {
+GETME_LANE_INLINE Point3<S> Centroid(const LaneNodes<kType, S>& p) {
   Point3<S> sum{Splat<S>(0.0), Splat<S>(0.0), Splat<S>(0.0)};
   for (const Point3<S>& node : p) sum += node;
   return sum * (1.0 / static_cast<double>(p.size()));
@@ -85,8 +85,9 @@ inline Point3<S> Centroid(const LaneNodes<kType, S>& p) {
 
 // eq. (8) with mean-edge-length-preserving ζ, then eq. (11): E'_r = (1−ρ)E + ρ(q + ζ(E' − q')).
 template <ElementType kType, typename S>
-inline LaneNodes<kType, S> ScaleAndRelax(const LaneNodes<kType, S>& original,
-                                         const LaneNodes<kType, S>& transformed, double rho) {
+GETME_LANE_INLINE LaneNodes<kType, S> ScaleAndRelax(const LaneNodes<kType, S>& original,
+                                                    const LaneNodes<kType, S>& transformed,
+                                                    double rho) {
   const Point3<S> q = Centroid<kType, S>(original);
   const Point3<S> q_prime = Centroid<kType, S>(transformed);
   const S transformed_length = MeanEdgeLength<kType, S>(transformed);
@@ -102,7 +103,8 @@ inline LaneNodes<kType, S> ScaleAndRelax(const LaneNodes<kType, S>& original,
 
 // One full step as the smoothers use it: transform (Def. 1), scale (eq. 8), relax (eq. 11).
 template <ElementType kType, typename S>
-inline LaneNodes<kType, S> RegularizingStep(const LaneNodes<kType, S>& p, S sigma, double rho) {
+GETME_LANE_INLINE LaneNodes<kType, S> RegularizingStep(const LaneNodes<kType, S>& p, S sigma,
+                                                       double rho) {
   return ScaleAndRelax<kType, S>(p, TransformElement<kType, S>(p, sigma), rho);
 }
 

@@ -59,8 +59,8 @@ namespace internal {
 // rather than lane by lane into memory: lane stores followed by a vector load cannot be forwarded
 // and stalled the passes (11 % of a mean-ratio pass at 8 lanes).
 template <typename S, std::size_t... kLane>
-inline S GatherCoordinate(const double* axis, const NodeId* const* lane_nodes, int k,
-                          std::index_sequence<kLane...>) {
+GETME_LANE_INLINE S GatherCoordinate(const double* axis, const NodeId* const* lane_nodes, int k,
+                                     std::index_sequence<kLane...>) {
   return S{axis[lane_nodes[kLane][k]]...};
 }
 
@@ -68,10 +68,10 @@ inline S GatherCoordinate(const double* axis, const NodeId* const* lane_nodes, i
 
 // Gathers the nodes of kWidth elements, one per lane: lane l's node ids start at lane_nodes[l].
 template <ElementType kType, int kWidth>
-inline LaneNodes<kType, LanesOf<kWidth>> GatherLanes(std::span<const double> x,
-                                                     std::span<const double> y,
-                                                     std::span<const double> z,
-                                                     const NodeId* const* lane_nodes) {
+GETME_LANE_INLINE LaneNodes<kType, LanesOf<kWidth>> GatherLanes(std::span<const double> x,
+                                                                std::span<const double> y,
+                                                                std::span<const double> z,
+                                                                const NodeId* const* lane_nodes) {
   using S = LanesOf<kWidth>;
   constexpr auto kLaneIndices = std::make_index_sequence<kWidth>();
   LaneNodes<kType, S> nodes;
@@ -86,10 +86,10 @@ inline LaneNodes<kType, LanesOf<kWidth>> GatherLanes(std::span<const double> x,
 // Gathers the nodes of `count` (1..kWidth) consecutive block entries whose node ids start at
 // `ids`, one element per lane; lanes past `count` repeat the last element.
 template <ElementType kType, int kWidth = kLanes>
-inline LaneNodes<kType, LanesOf<kWidth>> GatherLanes(std::span<const double> x,
-                                                     std::span<const double> y,
-                                                     std::span<const double> z, const NodeId* ids,
-                                                     int count) {
+GETME_LANE_INLINE LaneNodes<kType, LanesOf<kWidth>> GatherLanes(std::span<const double> x,
+                                                                std::span<const double> y,
+                                                                std::span<const double> z,
+                                                                const NodeId* ids, int count) {
   constexpr int kNodes = ElementTable<kType>::kNodes;
   const NodeId* lane_nodes[kWidth];
   for (int l = 0; l < kWidth; ++l) lane_nodes[l] = ids + std::min(l, count - 1) * kNodes;

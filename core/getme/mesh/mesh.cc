@@ -272,16 +272,7 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
   }
   mesh.corner_offset_[kElementTypeCount] = corners;
 
-  // Node → corner rows (corners ascend within a row), and node → element rows (canonical order).
-  mesh.node_corners_ = BuildRows(node_count, [&](auto&& emit) {
-    for (ElementType type : kAllElementTypes) {
-      const auto& nodes = mesh.blocks_[TypeIndex(type)].nodes;
-      const std::int64_t offset = mesh.corner_offset_[TypeIndex(type)];
-      for (std::size_t c = 0; c < nodes.size(); ++c) {
-        emit(nodes[c], static_cast<std::int32_t>(offset + static_cast<std::int64_t>(c)));
-      }
-    }
-  });
+  // Node → element rows (canonical order).
   mesh.node_elements_ = BuildRows(node_count, [&](auto&& emit) {
     for (ElementId e : mesh.canonical_order_) {
       for (NodeId node : mesh.element_nodes(e)) emit(node, e);

@@ -89,9 +89,9 @@ class Mesh {
   // 80 entries per element, more memory than everything else, so the engine collects neighbours
   // per element instead (ElementNeighbourFinder). Thread-safe; copies of a mesh share the table.
   std::span<const ElementId> element_neighbours(ElementId element) const;
-  // Node→corner adjacency: corner c of block t is t's corner_offset + block_index·NodeCount + k.
-  // Used by the simultaneous substep to gather transformed nodes in a fixed order.
-  const CompressedRows& node_corners() const { return node_corners_; }
+  // Corners (an element's node slots) are numbered block by block: corner c of block t is t's
+  // corner_offset + block_index·NodeCount + k. No node→corner table is kept: the simultaneous
+  // substep adds into node sums instead of gathering corners (parallel/element_tiles.h).
   std::int64_t corner_offset(ElementType type) const { return corner_offset_[TypeIndex(type)]; }
   std::int64_t corner_count() const { return corner_offset_[kElementTypeCount]; }
 
@@ -111,7 +111,6 @@ class Mesh {
     CompressedRows rows;
   };
   std::shared_ptr<LazyRows> element_neighbours_ = std::make_shared<LazyRows>();
-  CompressedRows node_corners_;
   std::int64_t boundary_face_count_ = 0;
 };
 

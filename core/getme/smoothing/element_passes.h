@@ -2,8 +2,10 @@
 
 // The two passes over every element that a simultaneous iteration (Sec. 3.1) spends its time in:
 // the mean ratio of each element (Def. 3, eq. 10, with validity, Def. 2) and the regularizing
-// step with its weight (Step 1: eqs. 4, 8, 11; Step 2.1: w_j = (1 − q_j)^η). Both run over one
-// range of one type block, kWidth elements per kernel call (lanes.h).
+// step with its weight (Step 1: eqs. 4, 8, 11; Step 2.1: w_j = (1 − q_j)^η), which adds into
+// Step 2's node sums. Each runs over a range of one type block's entries (the scatter over a
+// tile, in the tiles' visiting order: parallel/element_tiles.h), kWidth elements per kernel call
+// (lanes.h).
 //
 // They are templates over the width so that one source gives the reference two-lane pass
 // (compiled for the baseline x86-64) and the 4- and 8-lane passes that
@@ -25,7 +27,8 @@
 
 namespace getme {
 
-// Entries [begin, end) of one type block, with the mesh's coordinates.
+// Entries [begin, end) of one type block (or of a reordered copy of its ids), with the mesh's
+// coordinates.
 struct BlockRange {
   std::span<const double> x, y, z;
   const NodeId* nodes = nullptr;        // the block's node ids, kNodes per entry
@@ -52,7 +55,7 @@ struct TransformPassSettings {
 // w_j = (1 − q_j)^η (Step 2.1). The paper's η = 1/4 (and 1/2, 1) as square roots, which act on
 // whole lanes and are correctly rounded; other exponents through libm's pow, lane by lane.
 template <typename S>
-S WeightOfElement(S defect, double eta) {
+GETME_LANE_INLINE S WeightOfElement(S defect, double eta) {
   if (eta == 0.25) return Sqrt(Sqrt(defect));
   if (eta == 0.5) return Sqrt(defect);
   if (eta == 1.0) return defect;
