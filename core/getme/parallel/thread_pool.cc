@@ -42,12 +42,13 @@ void ThreadPool::RunChunks() {
       if (begin >= count_) return;
       next_chunk_ = std::min(count_, begin + grain_);
       body = body_;
-      ++running_;
+      published_running_.store(++running_, std::memory_order_relaxed);
     }
     (*body)(begin, std::min(count_, begin + grain_));
     {
       std::lock_guard lock(mutex_);
-      if (--running_ == 0) work_done_.notify_all();
+      published_running_.store(--running_, std::memory_order_release);
+      if (running_ == 0) work_done_.notify_all();
     }
   }
 }
@@ -96,6 +97,16 @@ void ThreadPool::ParallelFor(std::int64_t count, std::int64_t grain,
   RunChunks();
   // Every chunk is taken: wait only for the chunks still running. A worker that wakes later finds
   // nothing left and never touches `body`, so the caller does not wait for it to wake.
+  //
+  // The wait spins first. Callers issue ParallelFors back to back (Step 2 runs one per tile
+  // colour, about ten per iteration), and the other thread's last chunk is usually microseconds
+  // from done; sleeping on the condition variable would cost a futex wake-up each time, tens of
+  // microseconds, which on a 10k-element mesh was a third of an iteration on 2 threads.
+  const auto spin_end = std::chrono::steady_clock::now() + kSpin;
+  for (int i = 0; published_running_.load(std::memory_order_acquire) != 0; ++i) {
+    CpuRelax();
+    if (i % 64 == 63 && std::chrono::steady_clock::now() >= spin_end) break;
+  }
   std::unique_lock lock(mutex_);
   work_done_.wait(lock, [&] { return running_ == 0; });
   body_ = nullptr;

@@ -47,10 +47,13 @@ class ThreadPool {
   std::int64_t grain_ = 1;
   std::int64_t next_chunk_ = 0;  // guarded by mutex_
   int running_ = 0;              // chunks being run, on any thread; guarded by mutex_
+  // running_, readable without the mutex by the spinning caller of ParallelFor.
+  std::atomic<int> published_running_{0};
   std::uint64_t generation_ = 0;
   // generation_, readable without the mutex by a spinning worker.
   std::atomic<std::uint64_t> published_generation_{0};
-  // How long a worker that finished its chunks spins for the next ParallelFor before it sleeps.
+  // How long a worker that finished its chunks spins for the next ParallelFor before it sleeps,
+  // and how long the caller spins for the chunks still running before it sleeps.
   static constexpr std::chrono::microseconds kSpin{200};
   bool stopping_ = false;
 };
