@@ -95,6 +95,14 @@ const char* FormatName(formats::FileFormat format) {
       return "msh";
     case formats::FileFormat::kMedit:
       return "mesh";
+    case formats::FileFormat::kSu2:
+      return "su2";
+    case formats::FileFormat::kCgns:
+      return "cgns";
+    case formats::FileFormat::kExodus:
+      return "exo";
+    case formats::FileFormat::kOpenFoam:
+      return "openfoam";
   }
   return "?";
 }

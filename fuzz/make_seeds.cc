@@ -10,11 +10,14 @@
 #include "absl/strings/str_cat.h"
 #include "formats/file_io.h"
 #include "formats/mesh_file.h"
+#include "formats/openfoam/foam_file.h"
+#include "formats/openfoam/openfoam_writer.h"
 #include "getme/v1/smoother.pb.h"
 #include "getme_wire/engine_mesh.h"
 #include "google/protobuf/io/coded_stream.h"
 #include "google/protobuf/io/zero_copy_stream_impl_lite.h"
 #include "google/protobuf/util/json_util.h"
+#include "openfoam_fuzz_input.h"
 #include "remote/grid_upload.h"
 #include "spdlog/spdlog.h"
 
@@ -60,6 +63,9 @@ std::vector<Variant> Variants() {
       {"gmsh", "ascii41.msh", FileFormat::kGmsh, Options(kAscii, k41)},
       {"gmsh", "binary41.msh", FileFormat::kGmsh, Options(kBinary, k41)},
       {"medit", "mesh", FileFormat::kMedit, Options(kAscii)},
+      {"su2", "su2", FileFormat::kSu2, Options(kAscii)},
+      {"cgns", "cgns", FileFormat::kCgns, Options(kBinary)},
+      {"exodus", "exo", FileFormat::kExodus, Options(kBinary)},
   };
 }
 
@@ -131,6 +137,25 @@ int Run(const fs::path& out, const std::vector<std::string>& inputs) {
       // The generic targets read every format.
       for (const char* target : {variant.target, "mesh_file", "engine_mesh"}) {
         written += Write(out / target / name, *bytes) ? 1 : 0;
+      }
+    }
+    // The openfoam target's input: the polyMesh built from the mesh, its files joined
+    // (openfoam_fuzz_input.h), ASCII, binary, and binary with gzip-compressed points.
+    for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
+      absl::StatusOr<std::vector<formats::PolyMeshFile>> files =
+          formats::SerializeOpenFoam(*document, Options(encoding));
+      if (!files.ok()) continue;
+      formats::PolyMeshFiles polymesh = PolyMeshFilesOf(*files);
+      const bool binary = encoding == Encoding::kBinary;
+      written +=
+          Write(out / "openfoam" / absl::StrCat(stem, binary ? ".binary" : ".ascii", ".polymesh"),
+                JoinPolyMeshInput(polymesh));
+      if (!binary) continue;
+      if (absl::StatusOr<std::string> gzipped = formats::Gzip(polymesh.points.bytes);
+          gzipped.ok()) {
+        polymesh.points.bytes = *std::move(gzipped);
+        written += Write(out / "openfoam" / absl::StrCat(stem, ".gz.polymesh"),
+                         JoinPolyMeshInput(polymesh));
       }
     }
     if (absl::StatusOr<remote::GridWireMesh> wire = remote::ToWireMesh(document->grid); wire.ok()) {

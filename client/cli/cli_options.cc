@@ -12,7 +12,7 @@ const char kMainUsage[] =
     R"(getme: GETMe smoothing of mixed volume meshes (tetrahedra, hexahedra, pyramids, prisms)
 
 Usage:
-  getme smooth IN OUT [options]        smooth a mesh file (.vtk .vtu .msh .mesh)
+  getme smooth IN OUT [options]        smooth a mesh file (.vtk .vtu .msh .mesh .su2 .exo .cgns)
   getme quality IN [options]           report the element quality of a mesh
   getme report IN OUT [options]        draw quality histograms and q against time
   getme convert IN OUT [options]       write a mesh in another format, unchanged
@@ -27,8 +27,13 @@ const char kSmoothUsage[] = R"(Usage: getme smooth IN OUT [options]
 
 Smooths the tetrahedra, hexahedra, prisms (wedges) and pyramids of a mesh file and writes it
 with the smoothed coordinates and the per-element arrays mean_ratio, warpage and valid (cell
-data; Gmsh: $ElementData; MEDIT: OUT.sol). Formats, by extension or --format: .vtk (VTK legacy,
-ASCII or BINARY), .vtu (VTK XML), .msh (Gmsh 2.2 and 4.1, ASCII or binary), .mesh (MEDIT).
+data; Gmsh: $ElementData; MEDIT: OUT.sol; SU2 cannot hold them). Formats, by extension or
+--format: .vtk (VTK legacy, ASCII or BINARY), .vtu (VTK XML), .msh (Gmsh 2.2 and 4.1, ASCII or
+binary), .mesh (MEDIT), .su2 (SU2 native), .cgns (CGNS, HDF5 or ADF; written as HDF5, the
+quality as cell-centred solution fields), an OpenFOAM polyMesh directory (IN a case or its
+constant/polyMesh; OUT with --format openfoam, an existing directory, or any path without
+extension when IN is OpenFOAM, is a case: OUT/constant/polyMesh; only the points file changes;
+polyhedral cells stay fixed).
 Surface cells, lines and vertices are kept with their tags and move with their nodes (their
 mean_ratio and warpage are -1), as is every other array of the input. Nodes with a nonzero
 point array `fixed` (MEDIT: RequiredVertices) never move; boundary nodes stay fixed unless
@@ -62,12 +67,15 @@ Options:
   --sequential-batch N sequential picks per batch, evaluated in parallel (default 128); 1 picks
                        one element at a time, as the paper (docs/parallel-sequential.md)
   --fix-physical G     keep the nodes of group G fixed: a Gmsh physical group by name, tag or
-                       DIM:TAG; a number also matches gmsh:physical / medit:ref cell data.
-                       Repeatable.
+                       DIM:TAG, an SU2 marker, OpenFOAM patch or CGNS boundary condition or
+                       family by name; a number also matches
+                       gmsh:physical / medit:ref / su2:tag cell data. Exodus II: a node
+                       set, side set or element block by name or id. Repeatable.
   --fix-surfaces       keep the nodes of every surface cell, line and vertex fixed
-  --input-format F     read IN as F: vtk, vtu, msh, mesh (default: by extension, else content)
+  --input-format F     read IN as F: vtk, vtu, msh, mesh, su2, cgns (default: by extension, else
+                       content)
   --format F           write OUT as F: vtk, vtu, msh (the input's version, else 4.1), msh2,
-                       msh4, mesh (default: by OUT's extension)
+                       msh4, mesh, su2, cgns (default: by OUT's extension)
   --binary, --ascii    output encoding (default: the input's)
   --compress           .vtu: zlib-compressed arrays
   --trace FILE         record the progress events and the result as JSON lines (for
@@ -98,7 +106,8 @@ warpage, and a histogram of the mean ratio.
 
 Options:
   --bins N      histogram bins (default 20)
-  --input-format F  read IN as F: vtk, vtu, msh, mesh (default: by extension, else content)
+  --input-format F  read IN as F: vtk, vtu, msh, mesh, su2, cgns (default: by extension, else
+                    content)
   --threads N   worker threads; 0 = all cores (default)
   --json        one JSON object on stdout
   --server HOST:PORT  evaluate on a getme-server instead of in-process
@@ -168,11 +177,12 @@ const char kConvertUsage[] = R"(Usage: getme convert IN OUT [options]
 
 Writes the mesh of IN to OUT in the format OUT's extension (or --format) names, with every
 cell, tag and array kept: .vtk (VTK legacy), .vtu (VTK XML), .msh (Gmsh 2.2 / 4.1), .mesh
-(MEDIT). Nothing is smoothed.
+(MEDIT), .su2 (SU2), .cgns (CGNS). Nothing is smoothed.
 
 Options:
-  --input-format F     read IN as F: vtk, vtu, msh, mesh (default: by extension, else content)
-  --format F           write OUT as F: vtk, vtu, msh, msh2, msh4, mesh
+  --input-format F     read IN as F: vtk, vtu, msh, mesh, su2, cgns (default: by extension, else
+                       content)
+  --format F           write OUT as F: vtk, vtu, msh, msh2, msh4, mesh, su2, cgns
   --binary, --ascii    output encoding (default: the input's)
   --compress           .vtu: zlib-compressed arrays
   -h, --help           this text

@@ -1,6 +1,7 @@
 #include "cli/mesh_files.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "absl/strings/str_cat.h"
 #include "spdlog/spdlog.h"
@@ -9,7 +10,15 @@ namespace getme::cli {
 
 absl::StatusOr<formats::MeshDocument> ReadInputMesh(const std::string& path,
                                                     const FileOptions& files) {
-  return formats::ReadMeshDocument(path, files.input_format);
+  absl::StatusOr<formats::MeshDocument> document =
+      formats::ReadMeshDocument(path, files.input_format);
+  if (document.ok() && document->su2.has_value() && !document->su2->mirrored_cells.empty()) {
+    spdlog::info(
+        "{}: {} mirrored elements renumbered (every corner Jacobian negative in VTK's convention); "
+        "SU2 output writes them back in the file's order",
+        path, document->su2->mirrored_cells.size());
+  }
+  return document;
 }
 
 absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
@@ -20,10 +29,16 @@ absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
     target.format = files.output_format->format;
   } else if (std::optional<formats::FileFormat> format = formats::FormatFromExtension(path)) {
     target.format = *format;
+  } else if (std::filesystem::is_directory(path) ||
+             input.format == formats::FileFormat::kOpenFoam) {
+    // An existing directory can only take an OpenFOAM case (OUT/constant/polyMesh); an OpenFOAM
+    // input written to a path without extension stays an OpenFOAM case.
+    target.format = formats::FileFormat::kOpenFoam;
   } else {
-    return absl::InvalidArgumentError(
-        absl::StrCat("cannot tell the output format from '", path,
-                     "': use the extension .vtk, .vtu, .msh or .mesh, or give --format"));
+    return absl::InvalidArgumentError(absl::StrCat(
+        "cannot tell the output format from '", path,
+        "': use the extension .vtk, .vtu, .msh, .mesh, .su2, .cgns or .exo, a directory named "
+        "polyMesh or an existing directory (OpenFOAM), or give --format"));
   }
   target.options = formats::DefaultWriteOptions(input, target.format);
   if (files.output_format.has_value() && files.output_format->gmsh_version.has_value()) {
@@ -38,6 +53,29 @@ absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
     }
     target.options.vtu_compress = true;
   }
+  if (target.format == formats::FileFormat::kSu2 &&
+      target.options.encoding == formats::Encoding::kBinary) {
+    if (files.encoding.has_value()) {
+      return absl::InvalidArgumentError(
+          "SU2 output is ASCII only: SU2 has no binary native mesh (it reads binary meshes as "
+          "CGNS)");
+    }
+    target.options.encoding = formats::Encoding::kAscii;
+  }
+  if (target.format == formats::FileFormat::kCgns) {
+    if (files.encoding == formats::Encoding::kAscii) {
+      return absl::InvalidArgumentError(
+          "CGNS output is binary only (HDF5, written by the CGNS library)");
+    }
+    target.options.encoding = formats::Encoding::kBinary;
+  }
+  if (target.format == formats::FileFormat::kExodus) {
+    if (files.encoding == formats::Encoding::kAscii) {
+      return absl::InvalidArgumentError(
+          "Exodus II output is binary only (netCDF, written by the Exodus library)");
+    }
+    target.options.encoding = formats::Encoding::kBinary;
+  }
   if (target.format == formats::FileFormat::kMedit &&
       target.options.encoding == formats::Encoding::kBinary) {
     if (files.encoding.has_value()) {
@@ -51,6 +89,15 @@ absl::StatusOr<OutputTarget> ResolveOutput(const formats::MeshDocument& input,
 }
 
 absl::Status WriteOutputMesh(const formats::MeshDocument& document, const OutputTarget& target) {
+  // The polyhedra of an OpenFOAM mesh are not in the grid (openfoam_reader.h): only the
+  // polyMesh written back keeps them.
+  if (document.openfoam.has_value() && document.openfoam->polyhedron_count > 0 &&
+      target.format != formats::FileFormat::kOpenFoam) {
+    spdlog::warn(
+        "{} polyhedral cells of the OpenFOAM mesh are not written to {}: only the tetrahedra, "
+        "pyramids, prisms, hexahedra and boundary faces are (an OpenFOAM output keeps them)",
+        document.openfoam->polyhedron_count, formats::FormatDisplayName(target.format));
+  }
   if (absl::Status status =
           formats::WriteMeshDocument(target.path, document, target.format, target.options);
       !status.ok()) {
@@ -61,6 +108,8 @@ absl::Status WriteOutputMesh(const formats::MeshDocument& document, const Output
   if (target.format == formats::FileFormat::kGmsh) {
     variant = absl::StrCat(
         target.options.gmsh_version == formats::GmshVersion::k22 ? "2.2 " : "4.1 ", variant);
+  } else if (target.format == formats::FileFormat::kCgns) {
+    variant = "HDF5";
   } else if (target.format == formats::FileFormat::kVtkXml && binary) {
     variant = absl::StrCat(
         target.options.vtu_layout == formats::VtuLayout::kAppended ? "appended" : "inline",

@@ -2,8 +2,12 @@
 
 #include <optional>
 
+#include "formats/cgns/cgns_extras.h"
+#include "formats/exodus/exodus_extras.h"
 #include "formats/gmsh/gmsh_extras.h"
 #include "formats/medit/medit_extras.h"
+#include "formats/openfoam/openfoam_extras.h"
+#include "formats/su2/su2_extras.h"
 #include "formats/unstructured_grid.h"
 
 namespace getme::formats {
@@ -14,6 +18,10 @@ enum class FileFormat {
   kVtkXml,     // .vtu, VTK XML UnstructuredGrid
   kGmsh,       // .msh, Gmsh MSH 2.2 or 4.1, ASCII or binary
   kMedit,      // .mesh, INRIA Gamma MEDIT (ASCII)
+  kOpenFoam,   // an OpenFOAM polyMesh directory (constant/polyMesh), ASCII or binary
+  kCgns,       // .cgns, CGNS (HDF5 or ADF) through the CGNS library
+  kSu2,        // .su2, SU2 native mesh (ASCII)
+  kExodus,     // .exo .e .ex2 .g, Exodus II (netCDF) through the Exodus II library
 };
 
 enum class GmshVersion { k22, k41 };
@@ -54,6 +62,10 @@ struct MeshDocument {
   UnstructuredGrid grid;
   std::optional<GmshExtras> gmsh;
   std::optional<MeditExtras> medit;
+  std::optional<OpenFoamExtras> openfoam;
+  std::optional<CgnsExtras> cgns;
+  std::optional<Su2Extras> su2;
+  std::optional<ExodusExtras> exodus;
 };
 
 }  // namespace getme::formats

@@ -63,6 +63,9 @@ struct GmshDataView {
   // The point / cell indices the section lists, in its order, when that is not simply every
   // point / cell in grid order. The grid array holds NaN (0 for "fixed") where nothing is listed.
   std::vector<std::int64_t> listed;
+  // Read from an $ElementNodeData section that gives each element one value at all its nodes,
+  // as the 2.2 writer stores cell arrays (gmsh_writer.h): the cell array is that value.
+  bool element_nodes = false;
 };
 
 // A section kept byte for byte (its body between the "$Name" line and "$EndName"): $Comments,

@@ -308,7 +308,18 @@ class Parser {
       } else if (name == "Elements") {
         status = is41() ? ParseElements41() : ParseElements22();
       } else if (name == "NodeData" || name == "ElementData") {
-        status = ParseDataView(name == "NodeData");
+        status = ParseDataView(name == "NodeData", /*element_nodes=*/false);
+      } else if (name == "ElementNodeData") {
+        // A cell array as getme's 2.2 writer stores it (one value per element, repeated at its
+        // nodes) becomes that array again; any other $ElementNodeData is kept verbatim.
+        const GmshCursor section_start = cursor_;
+        status = ParseDataView(/*on_nodes=*/false, /*element_nodes=*/true);
+        if (status.ok()) {
+          extras().section_order.back() = "ElementData";
+        } else {
+          cursor_ = section_start;
+          status = ParseRaw();
+        }
       } else {
         status = ParseRaw();
       }
@@ -851,7 +862,10 @@ class Parser {
 
   // ---- $NodeData / $ElementData ----
 
-  absl::Status ParseDataView(bool on_nodes) {
+  // `element_nodes`: an $ElementNodeData section, accepted only if every entry has the same
+  // values at each node of its element (anything else is an error here, and the caller keeps the
+  // section verbatim instead).
+  absl::Status ParseDataView(bool on_nodes, bool element_nodes) {
     const absl::string_view targets = on_nodes ? "$Nodes" : "$Elements";
     if (!(on_nodes ? seen_nodes_ : seen_elements_)) {
       return Error(section_where_,
@@ -859,6 +873,7 @@ class Parser {
     }
     GmshDataView view;
     view.on_nodes = on_nodes;
+    view.element_nodes = element_nodes;
     // The three tag lists are text, one value a line, in both encodings.
     for (int list = 0; list < 3; ++list) {
       static constexpr absl::string_view kLists[] = {"string", "real", "integer"};
@@ -968,21 +983,39 @@ class Parser {
       }
       in_order = in_order && target == i;
       view.listed.push_back(target);
-      for (std::int64_t c = 0; c < components; ++c) {
-        absl::StatusOr<double> value = Real([&] {
-          return absl::StrCat("value ", c + 1, " of ", components, " of entry ", i + 1, " (",
-                              on_nodes ? "node" : "element", " ", *tag, ")");
-        });
-        if (!value.ok()) return value.status();
-        array.reals[target * components + c] = *value;
+      std::int64_t nodes = 1;
+      if (element_nodes) {
+        absl::StatusOr<std::int64_t> count =
+            Int([&] { return absl::StrCat("the node count of entry ", i + 1); });
+        if (!count.ok()) return count.status();
+        if (*count != document_.grid.cells.node_count(target)) {
+          return Error(cursor_.Where(), "not one value per element");
+        }
+        nodes = *count;
+      }
+      for (std::int64_t node = 0; node < nodes; ++node) {
+        for (std::int64_t c = 0; c < components; ++c) {
+          absl::StatusOr<double> value = Real([&] {
+            return absl::StrCat("value ", c + 1, " of ", components, " of entry ", i + 1, " (",
+                                on_nodes ? "node" : "element", " ", *tag, ")");
+          });
+          if (!value.ok()) return value.status();
+          double& stored = array.reals[target * components + c];
+          if (node == 0) {
+            stored = *value;
+          } else if (!(*value == stored || (std::isnan(*value) && std::isnan(stored)))) {
+            return Error(cursor_.Where(), "not one value per element");
+          }
+        }
       }
     }
     if (in_order) view.listed.clear();
     view.array_name = array.name;
+    if (absl::Status status = ExpectEnd(); !status.ok()) return status;
     (on_nodes ? document_.grid.point_data : document_.grid.cell_data)
         .push_back(MakeAttribute(std::move(array)));
     extras().data_views.push_back(std::move(view));
-    return ExpectEnd();
+    return absl::OkStatus();
   }
 
   std::string UniqueName(const std::string& base, std::int64_t step, bool on_nodes) {

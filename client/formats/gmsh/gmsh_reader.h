@@ -17,8 +17,10 @@ namespace getme::formats {
 // array named by its first string tag. A later section with a name already taken (another time
 // step, another partition) gets " [step N]" (or " [k]") appended so every array keeps its own
 // values; points or cells a section does not list hold NaN, except in an array named "fixed",
-// where they hold 0 (not fixed). document.gmsh holds everything else needed to write the file
-// back (see GmshExtras).
+// where they hold 0 (not fixed). An $ElementNodeData section whose every entry has one value at
+// all nodes of its element (how the writer stores 2.2 cell arrays, gmsh_writer.h) is read as a
+// cell array too; any other $ElementNodeData is kept verbatim. document.gmsh holds everything
+// else needed to write the file back (see GmshExtras).
 //
 // Second- and higher-order elements are rejected, naming the element and its type: getme
 // smooths linear elements only.

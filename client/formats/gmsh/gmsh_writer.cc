@@ -102,7 +102,8 @@ class Writer {
         grid_(document.grid),
         v41_(options.gmsh_version == GmshVersion::k41),
         out_(options.encoding == Encoding::kBinary),
-        layout_(std::move(layout)) {}
+        layout_(std::move(layout)),
+        cell_views_on_nodes_(!v41_ && TypeRuns(grid_.cells) > 1) {}
 
   absl::StatusOr<std::string> Write() {
     if (absl::Status status = Check(); !status.ok()) return status;
@@ -469,8 +470,18 @@ class Writer {
     return absl::OkStatus();
   }
 
+  // The runs of consecutive cells of one type: the cell blocks meshio makes of the $Elements.
+  static std::int64_t TypeRuns(const GridCells& cells) {
+    std::int64_t runs = 0;
+    for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
+      if (cell == 0 || cells.types[cell] != cells.types[cell - 1]) ++runs;
+    }
+    return runs;
+  }
+
   absl::Status WriteView(const ViewPlan& plan) {
     const DataArray& array = *plan.array;
+    const bool element_nodes = !plan.on_nodes && cell_views_on_nodes_;
     const int components = plan.component >= 0 ? 1 : array.components;
     const std::int64_t count = plan.on_nodes ? grid_.point_count() : grid_.cells.size();
     const std::vector<std::int64_t>* listed =
@@ -499,7 +510,9 @@ class Writer {
       integer_tags[1] = components;
       integer_tags[2] = entries;
     }
-    const absl::string_view section = plan.on_nodes ? "NodeData" : "ElementData";
+    const absl::string_view section = plan.on_nodes   ? "NodeData"
+                                      : element_nodes ? "ElementNodeData"
+                                                      : "ElementData";
     out_.Begin(section);
     out_.Line(absl::StrCat(string_tags.size()));
     for (const std::string& tag : string_tags) out_.Line(absl::StrCat("\"", tag, "\""));
@@ -514,9 +527,13 @@ class Writer {
     for (std::int64_t i = 0; i < entries; ++i) {
       const std::int64_t target = listed != nullptr ? (*listed)[i] : i;
       out_.Int(tags[target]);
-      for (int k = 0; k < components; ++k) {
-        const int component = plan.component >= 0 ? plan.component : k;
-        out_.Real(array.AsDouble(target * array.components + component));
+      const std::int64_t nodes = element_nodes ? grid_.cells.node_count(target) : 1;
+      if (element_nodes) out_.Int(nodes);
+      for (std::int64_t node = 0; node < nodes; ++node) {
+        for (int k = 0; k < components; ++k) {
+          const int component = plan.component >= 0 ? plan.component : k;
+          out_.Real(array.AsDouble(target * array.components + component));
+        }
       }
       out_.Eol();
     }
@@ -533,6 +550,9 @@ class Writer {
   bool physical_names_written_ = false;
   bool entities_written_ = false;
   std::vector<const DataArray*> written_arrays_;
+  // MSH 2.2 cell arrays go to $ElementNodeData when the elements are of more than one type (in
+  // grid order, more than one run): see gmsh_writer.h.
+  bool cell_views_on_nodes_;
 };
 
 }  // namespace

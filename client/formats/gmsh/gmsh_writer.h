@@ -25,6 +25,16 @@ namespace getme::formats {
 // place when the version and encoding are the ones read and the tags are kept; otherwise, as
 // for VTK field data, a warning names what is left out.
 //
+// MSH 2.2 cell arrays and meshio. meshio's MSH 2.2 reader (5.0 to 7.0, gmsh/_gmsh22.py) splits
+// an $ElementData section among its cell blocks by the length of its (type, data) tuples, 2,
+// instead of the blocks' sizes, and fails ("Incompatible cell data … has length 2") whenever the
+// $Elements hold more than one run of one element type — any mesh with surface triangles or
+// mixed volume types. So in MSH 2.2 with more than one run, each cell array is written as an
+// $ElementNodeData view instead: the element's value once per node of the element. Gmsh shows it
+// as the same piecewise-constant field, meshio skips the section and reads the mesh, and the
+// reader turns such a section back into the cell array (gmsh_reader.h). MSH 4.1 (meshio reads
+// its $ElementData right) and single-run 2.2 meshes keep $ElementData.
+//
 // InvalidArgument for a grid MSH cannot hold: a cell type other than vertex, line, triangle,
 // quad, tetra, hexahedron, wedge or pyramid, node ids out of range, array lengths that do not
 // match, a tag beyond the 32-bit ints of a binary field.

@@ -76,8 +76,10 @@ CHUNK_FIELDS = (
     ChunkField("quad_groups", 1, 5),
 )
 # Cell data that tags triangles and quads with their surface group, first found first: gmsh's
-# physical groups, MEDIT's references (as `getme smooth` reads them, formats::TaggedSurfaceFaces).
-SURFACE_TAG_ARRAYS = ("gmsh:physical", "medit:ref")
+# physical groups, MEDIT references, SU2 markers, CGNS boundary conditions, OpenFOAM patches,
+# Exodus side sets (as `getme smooth` reads them: kGroupTagArrays, client/formats/mesh_file.cc).
+SURFACE_TAG_ARRAYS = ("gmsh:physical", "medit:ref", "su2:tag", "cgns:bc", "openfoam:patch",
+                      "exodus:sideset")
 # About 1 MB per chunk (kDefaultChunkBytes, wire/getme_wire/mesh_chunker.h), far below gRPC's
 # 4 MB message limit; a smaller budget is raised to MIN_CHUNK_BYTES.
 DEFAULT_CHUNK_BYTES = 1 << 20

@@ -377,6 +377,68 @@ TEST(GmshWarnings, SeveralGroupsOfAnEntityIn22AreNamed) {
 // What Gmsh must find in a file we wrote (`document`: as we read it back): node count,
 // elements by Gmsh type, physical groups with their element counts, views with their time step
 // and entry count.
+// MSH 2.2 cell arrays of a mesh with several runs of element types go to $ElementNodeData, which
+// meshio skips (its 2.2 $ElementData split is wrong, gmsh_writer.h), and read back as the same
+// cell arrays; single-run 2.2 and 4.1 keep $ElementData.
+TEST(GmshCellArrays, MultiRunMsh22WritesElementNodeDataAndReadsItBack) {
+  MeshDocument document;
+  UnstructuredGrid& grid = document.grid;
+  grid.points.components = 3;
+  grid.points.reals = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  grid.cells.Add(10, {0, 1, 2, 3});
+  grid.cells.Add(5, {1, 2, 4});
+  DataArray quality;
+  quality.name = "mean_ratio";
+  quality.components = 3;
+  quality.reals = {0.25, 0.5, -1, 1e-300, 7.5, -2};
+  grid.cell_data.push_back({VtkAttributeKind::kScalars, quality.name, "default", {quality}});
+  for (const GmshVersion version : {GmshVersion::k22, GmshVersion::k41}) {
+    for (const Encoding encoding : {Encoding::kAscii, Encoding::kBinary}) {
+      WriteOptions options;
+      options.gmsh_version = version;
+      options.encoding = encoding;
+      const absl::StatusOr<std::string> bytes = SerializeGmsh(document, options);
+      ASSERT_TRUE(bytes.ok()) << bytes.status();
+      const bool on_nodes = version == GmshVersion::k22;
+      EXPECT_EQ(bytes->find("$ElementNodeData\n") != std::string::npos, on_nodes);
+      EXPECT_EQ(bytes->find("$ElementData\n") != std::string::npos, !on_nodes);
+      const absl::StatusOr<MeshDocument> read = ParseGmsh(*bytes);
+      ASSERT_TRUE(read.ok()) << read.status();
+      ExpectSameArraysByName(grid.cell_data, read->grid.cell_data);
+      ASSERT_EQ(read->gmsh->data_views.size(), 1u);
+      EXPECT_EQ(read->gmsh->data_views[0].element_nodes, on_nodes);
+      EXPECT_TRUE(read->gmsh->raw_sections.empty());
+    }
+  }
+  // One run (the tetrahedron alone): meshio reads 2.2 $ElementData then.
+  document.grid.cells = GridCells{};
+  document.grid.cells.Add(10, {0, 1, 2, 3});
+  document.grid.cell_data[0].arrays[0].reals = {0.25, 0.5, -1};
+  WriteOptions v22;
+  v22.gmsh_version = GmshVersion::k22;
+  const absl::StatusOr<std::string> single = SerializeGmsh(document, v22);
+  ASSERT_TRUE(single.ok()) << single.status();
+  EXPECT_NE(single->find("$ElementData\n"), std::string::npos);
+  EXPECT_EQ(single->find("$ElementNodeData\n"), std::string::npos);
+}
+
+// An $ElementNodeData view that varies within an element is another tool's: kept verbatim.
+TEST(GmshCellArrays, VaryingElementNodeDataStaysVerbatim) {
+  const std::string body = "1\n\"u\"\n1\n0\n3\n0\n1\n1\n1 4 0 1 2 3\n";
+  const std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+      "4 0 0 1\n$EndNodes\n$Elements\n1\n1 4 2 0 1 1 2 3 4\n$EndElements\n"
+      "$ElementNodeData\n" +
+      body + "$EndElementNodeData\n";
+  const absl::StatusOr<MeshDocument> read = ParseGmsh(text);
+  ASSERT_TRUE(read.ok()) << read.status();
+  EXPECT_TRUE(read->gmsh->data_views.empty());
+  ASSERT_EQ(read->gmsh->raw_sections.size(), 1u);
+  EXPECT_EQ(read->gmsh->raw_sections[0].name, "ElementNodeData");
+  EXPECT_EQ(read->gmsh->raw_sections[0].body, body);
+  EXPECT_EQ(FindArray(read->grid.cell_data, "u"), nullptr);
+}
+
 std::string Summary(const MeshDocument& document) {
   std::string text = "nodes " + std::to_string(document.grid.point_count()) + "\n";
   std::map<int, int> by_type;
@@ -402,14 +464,16 @@ std::string Summary(const MeshDocument& document) {
         std::int64_t entries = array.tuple_count();
         int step = 0;
         std::string name = array.name;
+        std::string kind = on_nodes ? "NodeData " : "ElementData ";
         for (const GmshDataView& view : document.gmsh->data_views) {
           if (view.on_nodes != on_nodes || view.array_name != array.name) continue;
           if (!view.listed.empty()) entries = static_cast<std::int64_t>(view.listed.size());
           step = static_cast<int>(view.integer_tags[0]);
           name = view.string_tags.front();
+          if (view.element_nodes) kind = "ElementNodeData ";
         }
-        text += std::string("view ") + (on_nodes ? "NodeData " : "ElementData ") +
-                std::to_string(step) + " " + std::to_string(entries) + " " + name + "\n";
+        text += std::string("view ") + kind + std::to_string(step) + " " + std::to_string(entries) +
+                " " + name + "\n";
       }
     }
   }

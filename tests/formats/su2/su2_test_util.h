@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "formats/mesh_document.h"
+
+namespace getme::formats::testing {
+
+// The shared SU2 meshes (read only) and the files make_su2_inputs.py writes (SU2_FIXTURES).
+std::string SharedSu2(const std::string& name);
+std::string Su2FixturePath(const std::string& name);
+
+// The rows of an SU2 file's section as token lists, found by plain text search independently of
+// the reader: the `count` rows after the line starting with `keyword` (e.g. "NELEM=",
+// "MARKER_TAG= load" then its MARKER_ELEMS rows).
+std::vector<std::vector<std::string>> SectionRows(const std::string& text,
+                                                  const std::string& keyword);
+
+// The number of volume cells that are invalid (some corner determinant ≤ 0, core's
+// IsValid) in `grid`.
+std::int64_t InvalidVolumeCells(const UnstructuredGrid& grid);
+
+}  // namespace getme::formats::testing
