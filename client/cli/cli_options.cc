@@ -30,7 +30,8 @@ with the smoothed coordinates and the per-element arrays mean_ratio, warpage and
 data; Gmsh: $ElementData; MEDIT: OUT.sol; SU2 cannot hold them). Formats, by extension or
 --format: .vtk (VTK legacy, ASCII or BINARY), .vtu (VTK XML), .msh (Gmsh 2.2 and 4.1, ASCII or
 binary), .mesh (MEDIT), .su2 (SU2 native), .cgns (CGNS, HDF5 or ADF; written as HDF5, the
-quality as cell-centred solution fields), an OpenFOAM polyMesh directory (IN a case or its
+quality as cell-centred solution fields), .exo .e .ex2 .g (Exodus II; the quality as element
+variables), an OpenFOAM polyMesh directory (IN a case or its
 constant/polyMesh; OUT with --format openfoam, an existing directory, or any path without
 extension when IN is OpenFOAM, is a case: OUT/constant/polyMesh; only the points file changes;
 polyhedral cells stay fixed).
@@ -72,10 +73,10 @@ Options:
                        gmsh:physical / medit:ref / su2:tag cell data. Exodus II: a node
                        set, side set or element block by name or id. Repeatable.
   --fix-surfaces       keep the nodes of every surface cell, line and vertex fixed
-  --input-format F     read IN as F: vtk, vtu, msh, mesh, su2, cgns (default: by extension, else
-                       content)
+  --input-format F     read IN as F: vtk, vtu, msh, mesh, su2, cgns, exodus, openfoam
+                       (default: by extension, a directory as openfoam, else content)
   --format F           write OUT as F: vtk, vtu, msh (the input's version, else 4.1), msh2,
-                       msh4, mesh, su2, cgns (default: by OUT's extension)
+                       msh4, mesh, su2, cgns, exodus, openfoam (default: by OUT's extension)
   --binary, --ascii    output encoding (default: the input's)
   --compress           .vtu: zlib-compressed arrays
   --trace FILE         record the progress events and the result as JSON lines (for
@@ -106,8 +107,8 @@ warpage, and a histogram of the mean ratio.
 
 Options:
   --bins N      histogram bins (default 20)
-  --input-format F  read IN as F: vtk, vtu, msh, mesh, su2, cgns (default: by extension, else
-                    content)
+  --input-format F  read IN as F: vtk, vtu, msh, mesh, su2, cgns, exodus, openfoam
+                    (default: by extension, a directory as openfoam, else content)
   --threads N   worker threads; 0 = all cores (default)
   --json        one JSON object on stdout
   --server HOST:PORT  evaluate on a getme-server instead of in-process
@@ -177,12 +178,14 @@ const char kConvertUsage[] = R"(Usage: getme convert IN OUT [options]
 
 Writes the mesh of IN to OUT in the format OUT's extension (or --format) names, with every
 cell, tag and array kept: .vtk (VTK legacy), .vtu (VTK XML), .msh (Gmsh 2.2 / 4.1), .mesh
-(MEDIT), .su2 (SU2), .cgns (CGNS). Nothing is smoothed.
+(MEDIT), .su2 (SU2), .cgns (CGNS), .exo (Exodus II), an OpenFOAM polyMesh directory
+(--format openfoam). Nothing is smoothed.
 
 Options:
-  --input-format F     read IN as F: vtk, vtu, msh, mesh, su2, cgns (default: by extension, else
-                       content)
-  --format F           write OUT as F: vtk, vtu, msh, msh2, msh4, mesh, su2, cgns
+  --input-format F     read IN as F: vtk, vtu, msh, mesh, su2, cgns, exodus, openfoam
+                       (default: by extension, a directory as openfoam, else content)
+  --format F           write OUT as F: vtk, vtu, msh, msh2, msh4, mesh, su2, cgns, exodus,
+                       openfoam
   --binary, --ascii    output encoding (default: the input's)
   --compress           .vtu: zlib-compressed arrays
   -h, --help           this text

@@ -101,7 +101,8 @@ void ThreadPool::ParallelFor(std::int64_t count, std::int64_t grain,
   // The wait spins first. Callers issue ParallelFors back to back (Step 2 runs one per tile
   // colour, about ten per iteration), and the other thread's last chunk is usually microseconds
   // from done; sleeping on the condition variable would cost a futex wake-up each time, tens of
-  // microseconds, which on a 10k-element mesh was a third of an iteration on 2 threads.
+  // microseconds: it made a 10k-element iteration on 2 threads 0.38-0.57 ms instead of 0.31 ms
+  // (docs/benchmarks.md, "Small meshes at 2 threads").
   const auto spin_end = std::chrono::steady_clock::now() + kSpin;
   for (int i = 0; published_running_.load(std::memory_order_acquire) != 0; ++i) {
     CpuRelax();
