@@ -436,6 +436,9 @@ std::vector<TaggedFace> TaggedSurfaceFaces(const MeshDocument& document) {
       if (grid.cells.node_count(cell) != face.size) continue;
       std::copy_n(grid.cells.nodes(cell), face.size, face.nodes.begin());
       face.tag = static_cast<std::int64_t>(tags->AsDouble(cell));
+      // The Exodus reader marks a face of no side set -1 (exodus_reader.h); here, as in every
+      // other format, "no group" is 0, which local and remote runs both leave ungrouped.
+      if (absl::string_view(name) == "exodus:sideset" && face.tag < 0) face.tag = 0;
       faces.push_back(face);
     }
     break;

@@ -83,9 +83,11 @@ absl::StatusOr<std::vector<std::uint8_t>> SelectFixedNodes(const MeshDocument& d
                                                            const std::vector<std::string>& groups,
                                                            bool surface_cells);
 
-// A triangle or quad cell of a file with its surface group: the cell's value in the cell array
-// "gmsh:physical" (a Gmsh physical group; MSH files and what meshio writes from them) or, if the
-// file has none, "medit:ref" (a MEDIT reference), else "su2:tag" (an SU2 marker).
+// A triangle or quad cell of a file with its surface group: the cell's value in the first of the
+// cell arrays "gmsh:physical" (a Gmsh physical group; MSH files and what meshio writes from
+// them), "medit:ref" (a MEDIT reference), "su2:tag" (an SU2 marker), "cgns:bc" (a CGNS boundary
+// condition), "openfoam:patch", "exodus:sideset" that the file has. 0 is no group (an Exodus
+// face in no side set, -1 in its array, too).
 struct TaggedFace {
   std::array<std::int64_t, 4> nodes{-1, -1, -1, -1};
   int size = 0;

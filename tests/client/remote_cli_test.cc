@@ -137,6 +137,56 @@ TEST_F(RemoteCliTest, SlidingOnAFileWithPhysicalGroupsKeepsTheGroupsRemotely) {
   EXPECT_TRUE(ReadFile(local_out) == ReadFile(remote_out)) << "remote and local .msh differ";
 }
 
+// The client converts, the wire does not change (issue 17): a Gmsh mesh with named groups,
+// converted to each format of issue 17, smooths through the service with a sliding boundary to
+// what the local run writes, with the same surface groups. Both outputs are compared as the VTK
+// files `getme convert` makes of them (a CGNS or Exodus file's bytes also hold HDF5 and netCDF
+// bookkeeping); an OpenFOAM input is a case directory, and so is its output.
+TEST_F(RemoteCliTest, EveryFileFormatSmoothsRemotelyAsLocally) {
+  const std::string source = std::string(GETME_GROUPED_HYBRID_DIR) + "/hybrid-groups.msh";
+  struct Variant {
+    std::string name;  // the input's file name; no extension: an OpenFOAM case
+    std::vector<std::string> convert_options;
+  };
+  const std::vector<Variant> variants = {
+      {"in.su2", {}}, {"in.cgns", {}}, {"in.exo", {}}, {"in-case", {"--format", "openfoam"}}};
+  for (const Variant& variant : variants) {
+    SCOPED_TRACE(variant.name);
+    const std::string input = TempPath(variant.name);
+    std::vector<std::string> convert = {"convert", source, input};
+    convert.insert(convert.end(), variant.convert_options.begin(), variant.convert_options.end());
+    const RunResult converted = RunGetme(convert);
+    ASSERT_EQ(converted.exit_status, 0) << converted.err;
+    const std::string extension =
+        variant.name.find('.') == std::string::npos ? "" : variant.name.substr(2);
+    const std::string local_out = TempPath("local" + extension);
+    const std::string remote_out = TempPath("remote" + extension);
+    // The output format as the input's: an OpenFOAM output needs --format (TempPath's dots).
+    std::vector<std::string> options = {"--boundary", "slide",     "--json",
+                                        "--quiet",    "--threads", "1"};
+    options.insert(options.end(), variant.convert_options.begin(), variant.convert_options.end());
+    const auto [local, remote] = SmoothBothWays(input, local_out, remote_out, options);
+    ASSERT_EQ(local.exit_status, 0) << local.err;
+    ASSERT_EQ(remote.exit_status, 0) << remote.err;
+    const JsonValue local_result = JsonLines(local.out).back();
+    const JsonValue remote_result = JsonLines(remote.out).back();
+    const JsonValue* local_slide = local_result.Find("boundary_slide");
+    const JsonValue* remote_slide = remote_result.Find("boundary_slide");
+    ASSERT_NE(local_slide, nullptr) << local.out;
+    ASSERT_NE(remote_slide, nullptr) << remote.out;
+    EXPECT_EQ(remote_slide->Find("surface_groups")->number,
+              local_slide->Find("surface_groups")->number);
+    EXPECT_GT(remote_slide->Find("slid_nodes")->number, 0);
+    const std::string local_vtk = TempPath("local-" + variant.name + ".vtk");
+    const std::string remote_vtk = TempPath("remote-" + variant.name + ".vtk");
+    ASSERT_EQ(RunGetme({"convert", local_out, local_vtk}).exit_status, 0);
+    ASSERT_EQ(RunGetme({"convert", remote_out, remote_vtk}).exit_status, 0);
+    const std::string local_bytes = ReadFile(local_vtk);
+    EXPECT_GT(local_bytes.size(), 1000u);
+    EXPECT_TRUE(local_bytes == ReadFile(remote_vtk)) << "remote and local results differ";
+  }
+}
+
 TEST_F(RemoteCliTest, RemoteSmoothWritesTheSameFileAsLocal) {
   for (const std::string& input : {kHexBlock, kHybrid}) {
     const std::string local_out = TempPath("local.vtk");

@@ -9,15 +9,16 @@
 
 namespace getme::formats {
 
-// The files of the polyMesh of `document`, which must have been read from a polyMesh
-// (MeshDocument::openfoam): faces, owner, neighbour, boundary and the zone files exactly as read,
-// and the points file with only its list replaced by the grid's points, in the points file's
-// own encoding (ASCII: shortest decimals that read back bit-identical; binary: raw little-endian
-// doubles, or floats for scalar=32) and compression.
+// The files of the polyMesh of `document`. Read from a polyMesh (MeshDocument::openfoam): faces,
+// owner, neighbour, boundary and the zone files exactly as read, and the points file with only
+// its list replaced by the grid's points, in the points file's own encoding (ASCII: shortest
+// decimals that read back bit-identical; binary: raw little-endian doubles, or floats for
+// scalar=32) and compression. From another format: faces, owners and patches built from the
+// cells first (BuildPolyMesh, polymesh_builder.h), in `options.encoding`.
 //
-// InvalidArgument when the document has no OpenFOAM extras (building faces, owners and patches
-// from cells of another format is not implemented), when its point count differs from the
-// polyMesh's, or when `options.encoding` asks for another encoding than the points file's.
+// InvalidArgument when the cells cannot make a polyMesh (BuildPolyMesh says which), when the
+// point count differs from the polyMesh's, or when `options.encoding` asks for another encoding
+// than the points file's of a polyMesh read back.
 absl::StatusOr<std::vector<PolyMeshFile>> SerializeOpenFoam(const MeshDocument& document,
                                                             const WriteOptions& options);
 
