@@ -207,8 +207,10 @@ void ExpectHolds(const MeshDocument& document, const Expected& expected) {
   ASSERT_EQ(document.su2->markers.size(), expected.markers.size());
   // JSON objects come back sorted by name; the file's marker order is Gmsh's group order.
   for (const auto& [name, cells] : expected.markers) {
+    // clang 14 cannot capture a structured binding in a lambda (C++20's P1091, clang 16).
+    const std::string& wanted = name;
     const auto marker = std::find_if(document.su2->markers.begin(), document.su2->markers.end(),
-                                     [&](const Su2Marker& m) { return m.name == name; });
+                                     [&](const Su2Marker& m) { return m.name == wanted; });
     ASSERT_NE(marker, document.su2->markers.end()) << name;
     const absl::StatusOr<std::vector<std::int64_t>> group = GroupCells(document, name);
     ASSERT_TRUE(group.ok()) << group.status();
