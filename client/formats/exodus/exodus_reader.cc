@@ -49,6 +49,13 @@ class ExodusFileReader {
                                                 absl::string_view what);
   absl::StatusOr<std::vector<std::string>> Names(ex_entity_type type, std::int64_t count,
                                                  absl::string_view what);
+  // A side or node set's entry and distribution-factor counts, each checked against the file.
+  struct SetCounts {
+    std::int64_t entries = 0;
+    std::int64_t factors = 0;
+  };
+  absl::StatusOr<SetCounts> ReadSetCounts(ex_entity_type type, std::int64_t id,
+                                          const std::string& where, absl::string_view entry_name);
   absl::Status ReadCoordinates();
   absl::Status ReadBlocks();
   absl::Status ReadSideSets();
@@ -103,6 +110,24 @@ absl::StatusOr<std::vector<std::int64_t>> ExodusFileReader::Ids(ex_entity_type t
     }
   }
   return ids;
+}
+
+absl::StatusOr<ExodusFileReader::SetCounts> ExodusFileReader::ReadSetCounts(
+    ex_entity_type type, std::int64_t id, const std::string& where, absl::string_view entry_name) {
+  SetCounts counts;
+  if (ex_get_set_param(exoid_, type, id, &counts.entries, &counts.factors) < 0) {
+    return ExodusError(where);
+  }
+  if (absl::Status status = CheckCount(counts.entries, absl::StrCat(where, ": ", entry_name));
+      !status.ok()) {
+    return status;
+  }
+  if (absl::Status status =
+          CheckCount(counts.factors, absl::StrCat(where, ": distribution factor count"));
+      !status.ok()) {
+    return status;
+  }
+  return counts;
 }
 
 absl::StatusOr<std::vector<std::string>> ExodusFileReader::Names(ex_entity_type type,
@@ -256,20 +281,11 @@ absl::Status ExodusFileReader::ReadSideSets() {
     set.id = (*ids)[k];
     set.name = (*names)[k];
     const std::string where = absl::StrCat("side set ", set.id, Quoted(set.name));
-    std::int64_t entries = 0;
-    std::int64_t factors = 0;
-    if (ex_get_set_param(exoid_, EX_SIDE_SET, set.id, &entries, &factors) < 0) {
-      return ExodusError(where);
-    }
-    if (absl::Status status = CheckCount(entries, absl::StrCat(where, ": entry count"));
-        !status.ok()) {
-      return status;
-    }
-    if (absl::Status status =
-            CheckCount(factors, absl::StrCat(where, ": distribution factor count"));
-        !status.ok()) {
-      return status;
-    }
+    const absl::StatusOr<SetCounts> counts =
+        ReadSetCounts(EX_SIDE_SET, set.id, where, "entry count");
+    if (!counts.ok()) return counts.status();
+    const std::int64_t entries = counts->entries;
+    const std::int64_t factors = counts->factors;
     set.elements.resize(static_cast<std::size_t>(entries));
     set.sides.resize(static_cast<std::size_t>(entries));
     if (entries > 0 &&
@@ -353,20 +369,11 @@ absl::Status ExodusFileReader::ReadNodeSets() {
     set.id = (*ids)[k];
     set.name = (*names)[k];
     const std::string where = absl::StrCat("node set ", set.id, Quoted(set.name));
-    std::int64_t entries = 0;
-    std::int64_t factors = 0;
-    if (ex_get_set_param(exoid_, EX_NODE_SET, set.id, &entries, &factors) < 0) {
-      return ExodusError(where);
-    }
-    if (absl::Status status = CheckCount(entries, absl::StrCat(where, ": node count"));
-        !status.ok()) {
-      return status;
-    }
-    if (absl::Status status =
-            CheckCount(factors, absl::StrCat(where, ": distribution factor count"));
-        !status.ok()) {
-      return status;
-    }
+    const absl::StatusOr<SetCounts> counts =
+        ReadSetCounts(EX_NODE_SET, set.id, where, "node count");
+    if (!counts.ok()) return counts.status();
+    const std::int64_t entries = counts->entries;
+    const std::int64_t factors = counts->factors;
     set.nodes.resize(static_cast<std::size_t>(entries));
     if (entries > 0 && ex_get_set(exoid_, EX_NODE_SET, set.id, set.nodes.data(), nullptr) < 0) {
       return ExodusError(absl::StrCat(where, ": cannot read its nodes"));
