@@ -17,18 +17,14 @@ namespace {
 
 using Edge = std::array<NodeId, 2>;  // smaller id first
 
-Vec3 Position(const Mesh& mesh, NodeId node) {
-  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-}
-
 // Unit normal of a face in the turning sense of its nodes; a quad's from its diagonals, which is
 // the mean normal of a non-planar quad. Zero for a face without area.
 Vec3 UnitNormal(const Mesh& mesh, const BoundaryFace& face) {
-  const Vec3 a = Position(mesh, face.nodes[0]);
-  const Vec3 b = Position(mesh, face.nodes[1]);
-  const Vec3 c = Position(mesh, face.nodes[2]);
+  const Vec3 a = NodePosition(mesh, face.nodes[0]);
+  const Vec3 b = NodePosition(mesh, face.nodes[1]);
+  const Vec3 c = NodePosition(mesh, face.nodes[2]);
   const Vec3 normal =
-      face.size == 3 ? (b - a).cross(c - a) : (c - a).cross(Position(mesh, face.nodes[3]) - b);
+      face.size == 3 ? (b - a).cross(c - a) : (c - a).cross(NodePosition(mesh, face.nodes[3]) - b);
   const double length = normal.norm();
   return length > 0.0 ? Vec3(normal / length) : Vec3(Vec3::Zero());
 }
@@ -65,10 +61,10 @@ std::vector<BoundaryFace> CollectBoundaryFaces(const Mesh& mesh) {
     BoundaryFace face = use.face;
     const std::span<const NodeId> ids = mesh.element_nodes(use.element);
     Vec3 element_centre = Vec3::Zero();
-    for (const NodeId node : ids) element_centre += Position(mesh, node);
+    for (const NodeId node : ids) element_centre += NodePosition(mesh, node);
     element_centre /= static_cast<double>(ids.size());
     Vec3 face_centre = Vec3::Zero();
-    for (int k = 0; k < face.size; ++k) face_centre += Position(mesh, face.nodes[k]);
+    for (int k = 0; k < face.size; ++k) face_centre += NodePosition(mesh, face.nodes[k]);
     face_centre /= face.size;
     if (UnitNormal(mesh, face).dot(face_centre - element_centre) < 0.0) {
       ReverseFace(face.nodes, face.size);

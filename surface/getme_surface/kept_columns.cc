@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "getme/elements/vec3.h"
+
 namespace getme::surface {
 namespace {
 
@@ -12,10 +14,6 @@ namespace {
 // which the first round matches exactly while the nearest face stays the same; the second
 // catches a nearest face that changed with it.
 constexpr int kDistanceRounds = 2;
-
-Vec3 Position(const Mesh& mesh, NodeId node) {
-  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-}
 
 }  // namespace
 
@@ -66,8 +64,8 @@ KeptLayers DescribeKeptLayers(const Mesh& mesh, const LayerColumns& layers,
   KeptLayers kept;
   for (std::size_t i = 0; i < chains.size();) {
     const NodeId wall = chains[i].first;
-    const Vec3 base = Position(mesh, wall);
-    const Vec3 first_up = Position(mesh, chains[i].second.second) - base;
+    const Vec3 base = NodePosition(mesh, wall);
+    const Vec3 first_up = NodePosition(mesh, chains[i].second.second) - base;
     for (const std::size_t f : faces_at[wall]) {
       const std::array<NodeId, 4>& face = layers.wall_faces[f];
       kept.wall_faces.insert(kept.wall_faces.end(), face.begin(), face.end());
@@ -81,7 +79,7 @@ KeptLayers DescribeKeptLayers(const Mesh& mesh, const LayerColumns& layers,
     kept.direction.push_back(direction);
     for (; i < chains.size() && chains[i].first == wall; ++i) {
       const NodeId node = chains[i].second.second;
-      const double target = walls.Distance(Position(mesh, node));
+      const double target = walls.Distance(NodePosition(mesh, node));
       kept.nodes.push_back(node);
       kept.distance.push_back(
           (AlongToWallDistance(walls, base, direction, target, target) - base).dot(direction));

@@ -12,10 +12,6 @@
 namespace getme::surface {
 namespace {
 
-Vec3 Position(const Mesh& mesh, NodeId node) {
-  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-}
-
 // An element entered by one of its faces: the face's nodes and, for each, the node at the other
 // end of its column edge (the element's one edge from it that leaves the face). Only prisms
 // entered by a triangle and hexahedra have such a pairing.
@@ -54,15 +50,15 @@ Crossing Cross(const Mesh& mesh, ElementId element, int local_face) {
 double Aspect(const Mesh& mesh, const Crossing& crossing) {
   double height = 0.0;
   for (int k = 0; k < crossing.size; ++k) {
-    height += (Position(mesh, crossing.exit[k]) - Position(mesh, crossing.entry[k])).norm();
+    height += (NodePosition(mesh, crossing.exit[k]) - NodePosition(mesh, crossing.entry[k])).norm();
   }
   height /= crossing.size;
-  const Vec3 a = Position(mesh, crossing.entry[0]);
-  const Vec3 b = Position(mesh, crossing.entry[1]);
-  const Vec3 c = Position(mesh, crossing.entry[2]);
+  const Vec3 a = NodePosition(mesh, crossing.entry[0]);
+  const Vec3 b = NodePosition(mesh, crossing.entry[1]);
+  const Vec3 c = NodePosition(mesh, crossing.entry[2]);
   const double area = crossing.size == 3
                           ? 0.5 * (b - a).cross(c - a).norm()
-                          : 0.5 * (c - a).cross(Position(mesh, crossing.entry[3]) - b).norm();
+                          : 0.5 * (c - a).cross(NodePosition(mesh, crossing.entry[3]) - b).norm();
   return area > 0.0 ? height / std::sqrt(area) : HUGE_VAL;
 }
 
@@ -154,14 +150,14 @@ class ColumnFinder {
     std::array<NodeId, 4> wall = crossing.entry;
     const auto centre = [&](const std::array<NodeId, 4>& nodes) {
       Vec3 sum = Vec3::Zero();
-      for (int k = 0; k < crossing.size; ++k) sum += Position(mesh_, nodes[k]);
+      for (int k = 0; k < crossing.size; ++k) sum += NodePosition(mesh_, nodes[k]);
       return Vec3(sum / crossing.size);
     };
-    const Vec3 a = Position(mesh_, wall[0]);
-    const Vec3 b = Position(mesh_, wall[1]);
-    const Vec3 c = Position(mesh_, wall[2]);
+    const Vec3 a = NodePosition(mesh_, wall[0]);
+    const Vec3 b = NodePosition(mesh_, wall[1]);
+    const Vec3 c = NodePosition(mesh_, wall[2]);
     const Vec3 normal = crossing.size == 3 ? Vec3((b - a).cross(c - a))
-                                           : Vec3((c - a).cross(Position(mesh_, wall[3]) - b));
+                                           : Vec3((c - a).cross(NodePosition(mesh_, wall[3]) - b));
     if (normal.dot(centre(crossing.exit) - centre(crossing.entry)) < 0.0) {
       ReverseFace(wall, crossing.size);
     }

@@ -7,13 +7,7 @@
 #include "getme/elements/vec3.h"
 
 namespace getme::surface {
-namespace {
-
-Vec3 Position(const Mesh& mesh, NodeId node) {
-  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 LayerHeights MeasureLayerHeights(const Mesh& mesh, const LayerColumns& columns,
                                  const WallDistance& walls, const KeptLayers& kept,
@@ -23,7 +17,7 @@ LayerHeights MeasureLayerHeights(const Mesh& mesh, const LayerColumns& columns,
   heights.height.assign(mesh.node_count(), 0.0);
   std::vector<double> distance(mesh.node_count(), 0.0);
   for (NodeId node = 0; node < mesh.node_count(); ++node) {
-    if (columns.level[node] >= 1) distance[node] = walls.Distance(Position(mesh, node));
+    if (columns.level[node] >= 1) distance[node] = walls.Distance(NodePosition(mesh, node));
   }
   double first_sum = 0.0;
   double lean_sum = 0.0;
@@ -47,7 +41,7 @@ LayerHeights MeasureLayerHeights(const Mesh& mesh, const LayerColumns& columns,
     if (normal.dot(kept.direction[c]) < 0.0) normal = -normal;
     NodeId below = kept.wall[c];
     for (const NodeId node : kept.Nodes(c)) {
-      const Vec3 up = Position(mesh, node) - Position(mesh, below);
+      const Vec3 up = NodePosition(mesh, node) - NodePosition(mesh, below);
       below = node;
       if (!(up.norm() > 0.0 && normal.norm() > 0.0)) continue;
       const double cosine = std::clamp(up.dot(normal) / (up.norm() * normal.norm()), -1.0, 1.0);

@@ -32,7 +32,7 @@ bool WithinOneUlp(double x, double root) {
   return cube(below) < wide_x && wide_x < cube(above);
 }
 
-std::uint64_t Bits(double value) { return std::bit_cast<std::uint64_t>(value); }
+std::uint64_t RootBits(double value) { return std::bit_cast<std::uint64_t>(value); }
 
 std::vector<double> Arguments() {
   std::mt19937_64 random(2026);
@@ -92,7 +92,7 @@ TEST(CubeRootTest, LibmAnswersOutsideTheFastRange) {
                                        std::numeric_limits<double>::max(),
                                        inf,
                                        -inf};
-  for (double x : outside) EXPECT_EQ(Bits(CubeRoot(x)), Bits(std::cbrt(x))) << x;
+  for (double x : outside) EXPECT_EQ(RootBits(CubeRoot(x)), RootBits(std::cbrt(x))) << x;
   EXPECT_TRUE(std::isnan(CubeRoot(std::numeric_limits<double>::quiet_NaN())));
 }
 
@@ -110,7 +110,7 @@ TEST(CubeRootTest, EachLaneHasTheBitsOfTheScalarRoot) {
     for (int l = 0; l < kLanes; ++l) x[l] = arguments[i + l];
     const Lanes root = CubeRoot(x);
     for (int l = 0; l < kLanes; ++l) {
-      EXPECT_EQ(Bits(root[l]), Bits(CubeRoot(x[l]))) << std::hexfloat << x[l];
+      EXPECT_EQ(RootBits(root[l]), RootBits(CubeRoot(x[l]))) << std::hexfloat << x[l];
     }
   }
 }

@@ -22,7 +22,7 @@ template <typename Tag>
 class LaneKernelsTest : public ::testing::Test {};
 TYPED_TEST_SUITE(LaneKernelsTest, AllElementTypes, ElementTypeName);
 
-std::uint64_t Bits(double value) { return std::bit_cast<std::uint64_t>(value); }
+std::uint64_t LaneBits(double value) { return std::bit_cast<std::uint64_t>(value); }
 
 template <ElementType kType>
 std::vector<ElementNodes<kType>> TestElements() {
@@ -64,9 +64,9 @@ TYPED_TEST(LaneKernelsTest, RegularizingStepGivesEachLaneTheOneElementBits) {
       const auto expected =
           RegularizingStep<kType>(elements[(first + l) % elements.size()], sigma[l], 0.6);
       for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
-        EXPECT_EQ(Bits(moved[k].x[l]), Bits(expected[k].x())) << "element " << first + l;
-        EXPECT_EQ(Bits(moved[k].y[l]), Bits(expected[k].y())) << "element " << first + l;
-        EXPECT_EQ(Bits(moved[k].z[l]), Bits(expected[k].z())) << "element " << first + l;
+        EXPECT_EQ(LaneBits(moved[k].x[l]), LaneBits(expected[k].x())) << "element " << first + l;
+        EXPECT_EQ(LaneBits(moved[k].y[l]), LaneBits(expected[k].y())) << "element " << first + l;
+        EXPECT_EQ(LaneBits(moved[k].z[l]), LaneBits(expected[k].z())) << "element " << first + l;
       }
     }
   }
@@ -80,7 +80,7 @@ TYPED_TEST(LaneKernelsTest, MeanRatioGivesEachLaneTheOneElementBits) {
     const Lanes q = MeanRatioOrInvalid<kType, Lanes>(ToLanes<kType>(elements, first));
     for (int l = 0; l < kLanes; ++l) {
       const double expected = MeanRatioOrInvalid<kType>(elements[(first + l) % elements.size()]);
-      EXPECT_EQ(Bits(q[l]), Bits(expected)) << "element " << first + l;
+      EXPECT_EQ(LaneBits(q[l]), LaneBits(expected)) << "element " << first + l;
       if (expected == kInvalidQuality) ++invalid;
     }
   }

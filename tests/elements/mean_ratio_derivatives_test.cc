@@ -33,7 +33,7 @@
 namespace getme::test {
 namespace {
 
-constexpr int kTrials = 200;
+constexpr int kDerivativeTrials = 200;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 template <typename Tag>
@@ -171,7 +171,7 @@ TYPED_TEST(MeanRatioDerivativesTest, GradientMatchesCentralDifferencesOfTheCost)
   constexpr ElementType kType = TypeParam::kType;
   UnitRandom random(1401 + TypeIndex(kType));
   double worst = 0.0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     const double condition = DeterminantCondition(kType, ToPoints<kType>(p));
     for (int node = 0; node < NodeCount(kType); ++node) {
@@ -198,7 +198,7 @@ TYPED_TEST(MeanRatioDerivativesTest, HessianMatchesCentralDifferences) {
   UnitRandom random(1402 + TypeIndex(kType));
   double worst_from_gradient = 0.0;
   double worst_from_cost = 0.0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     const double condition = DeterminantCondition(kType, ToPoints<kType>(p));
     for (int node = 0; node < NodeCount(kType); ++node) {
@@ -261,7 +261,7 @@ TYPED_TEST(MeanRatioDerivativesTest, HessianMatchesCentralDifferences) {
 TYPED_TEST(MeanRatioDerivativesTest, HessianIsSymmetricAndPositiveSemiDefinite) {
   constexpr ElementType kType = TypeParam::kType;
   UnitRandom random(1403 + TypeIndex(kType));
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     for (int node = 0; node < NodeCount(kType); ++node) {
       const Eigen::Matrix3d h = InverseMeanRatioHessian<kType>(p, node).hessian;
@@ -279,7 +279,7 @@ TYPED_TEST(MeanRatioDerivativesTest, CostIsTheMeanOfInverseTetrahedralMeanRatios
   constexpr ElementType kType = TypeParam::kType;
   UnitRandom random(1404 + TypeIndex(kType));
   double worst = 0.0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     const Points points = ToPoints<kType>(p);
     const double cost = InverseMeanRatioCost<kType>(p);
@@ -307,7 +307,7 @@ TYPED_TEST(MeanRatioDerivativesTest, CostAndQualityEqualTheSeparateFunctionsBitF
   constexpr ElementType kType = TypeParam::kType;
   UnitRandom random(1407 + TypeIndex(kType));
   int invalid = 0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     ElementNodes<kType> p = TrialElement<kType>(random, trial);
     // Every third element mirrored (x → −x): every node tetrahedron inverted.
     if (trial % 3 == 2) {
@@ -320,7 +320,7 @@ TYPED_TEST(MeanRatioDerivativesTest, CostAndQualityEqualTheSeparateFunctionsBitF
   }
   // Both branches ran: the mirrored elements are inverted (cost +∞, quality kInvalidQuality).
   EXPECT_GT(invalid, 0);
-  EXPECT_LT(invalid, kTrials);
+  EXPECT_LT(invalid, kDerivativeTrials);
 }
 
 // Each node tetrahedron of a regular element (unit edges) is the target W up to a rotation
@@ -367,7 +367,7 @@ TYPED_TEST(MeanRatioDerivativesTest, InvariantUnderTranslationRotationAndScaling
   constexpr ElementType kType = TypeParam::kType;
   UnitRandom random(1405 + TypeIndex(kType));
   double worst = 0.0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     const Points points = ToPoints<kType>(p);
     Similarity similarity = random.RandomSimilarity();
@@ -465,7 +465,7 @@ TYPED_TEST(MeanRatioDerivativesTest, StepAgainstTheGradientLowersTheCost) {
   UnitRandom random(1406 + TypeIndex(kType));
   int checked = 0;
   int total = 0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     for (int node = 0; node < NodeCount(kType); ++node) {
       ++total;
@@ -495,7 +495,7 @@ TYPED_TEST(MeanRatioDerivativesTest, MeanRatioGradientMatchesCentralDifferencesO
   constexpr ElementType kType = TypeParam::kType;
   UnitRandom random(1411 + TypeIndex(kType));
   double worst = 0.0;
-  for (int trial = 0; trial < kTrials; ++trial) {
+  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
     const ElementNodes<kType> p = TrialElement<kType>(random, trial);
     const double condition = DeterminantCondition(kType, ToPoints<kType>(p));
     const MeanRatioGradientResult<kType> result = MeanRatioWithGradient<kType>(p);

@@ -15,7 +15,7 @@
 namespace getme::test {
 namespace {
 
-constexpr double kTolerance = 1e-12;
+constexpr double kMeanRatioTolerance = 1e-12;
 
 // 3 s^(2/3) / (2 + s²): the mean ratio of S = diag(1, 1, s), det S = s, ‖S‖_F² = 2 + s².
 double StretchedMeanRatio(double s) { return 3.0 * std::cbrt(s * s) / (2.0 + s * s); }
@@ -30,7 +30,7 @@ TEST(MeanRatioTest, CornerTetrahedron) {
                                                           Vec3(0, 1, 0), Vec3(0, 0, 1)};
   const double expected = std::pow(2.0, 4.0 / 3.0) / 3.0;
   EXPECT_TRUE(IsValid<ElementType::kTetrahedron>(corner));
-  EXPECT_NEAR(MeanRatio<ElementType::kTetrahedron>(corner), expected, kTolerance);
+  EXPECT_NEAR(MeanRatio<ElementType::kTetrahedron>(corner), expected, kMeanRatioTolerance);
   EXPECT_NEAR(expected, 0.8399473665965822, 1e-15);
 }
 
@@ -46,7 +46,7 @@ TEST(MeanRatioTest, RandomTetrahedraMatchTheEdgeLengthForm) {
       for (int j = i + 1; j < 4; ++j) squared_edges += (tet[i] - tet[j]).squaredNorm();
     }
     const double expected = 12.0 * std::cbrt(9.0 * volume * volume) / squared_edges;
-    EXPECT_NEAR(MeanRatio<ElementType::kTetrahedron>(tet), expected, kTolerance)
+    EXPECT_NEAR(MeanRatio<ElementType::kTetrahedron>(tet), expected, kMeanRatioTolerance)
         << "trial " << trial;
   }
 }
@@ -59,7 +59,8 @@ TEST(MeanRatioTest, HexahedronStretchedAlongZ) {
     for (Eigen::Vector3d& node : p) node.z() *= a;
     const auto hex = ToNodes<ElementType::kHexahedron>(p);
     EXPECT_TRUE(IsValid<ElementType::kHexahedron>(hex)) << "a = " << a;
-    EXPECT_NEAR(MeanRatio<ElementType::kHexahedron>(hex), StretchedMeanRatio(a), kTolerance)
+    EXPECT_NEAR(MeanRatio<ElementType::kHexahedron>(hex), StretchedMeanRatio(a),
+                kMeanRatioTolerance)
         << "a = " << a;
   }
 }
@@ -72,7 +73,7 @@ TEST(MeanRatioTest, RightPrismWithEquilateralBase) {
     for (Eigen::Vector3d& node : p) node.z() *= h;
     const auto prism = ToNodes<ElementType::kPrism>(p);
     EXPECT_TRUE(IsValid<ElementType::kPrism>(prism)) << "h = " << h;
-    EXPECT_NEAR(MeanRatio<ElementType::kPrism>(prism), StretchedMeanRatio(h), kTolerance)
+    EXPECT_NEAR(MeanRatio<ElementType::kPrism>(prism), StretchedMeanRatio(h), kMeanRatioTolerance)
         << "h = " << h;
   }
 }
@@ -87,7 +88,7 @@ TEST(MeanRatioTest, PyramidWithApexHeight) {
     const auto pyramid = ToNodes<ElementType::kPyramid>(p);
     EXPECT_TRUE(IsValid<ElementType::kPyramid>(pyramid)) << "h = " << h;
     EXPECT_NEAR(MeanRatio<ElementType::kPyramid>(pyramid), StretchedMeanRatio(std::sqrt(2.0) * h),
-                kTolerance)
+                kMeanRatioTolerance)
         << "h = " << h;
   }
 }
@@ -115,7 +116,7 @@ TYPED_TEST(MeanRatioTypedTest, NearlyFlatValidElementHasSmallPositiveQuality) {
   const double q = MeanRatio<kType>(thin);
   EXPECT_GT(q, 0.0);
   EXPECT_LT(q, 0.05);
-  EXPECT_NEAR(q, ReferenceMeanRatio(kType, p), kTolerance);
+  EXPECT_NEAR(q, ReferenceMeanRatio(kType, p), kMeanRatioTolerance);
 }
 
 TYPED_TEST(MeanRatioTypedTest, CollapsedNodeIsInvalid) {
@@ -141,7 +142,7 @@ TYPED_TEST(MeanRatioTypedTest, RandomElementsMatchEigenEvaluation) {
     for (int k = 0; k < static_cast<int>(Paper(kType).node_tets.size()); ++k) {
       const double expected = NodeTetEdges(kType, p, k).determinant();
       all_positive = all_positive && expected > 0.0;
-      ASSERT_NEAR(NodeTetDeterminant<kType>(nodes, k), expected, kTolerance)
+      ASSERT_NEAR(NodeTetDeterminant<kType>(nodes, k), expected, kMeanRatioTolerance)
           << "trial " << trial << ", node tetrahedron " << k;
     }
     ASSERT_EQ(IsValid<kType>(nodes), all_positive) << "trial " << trial;
@@ -153,8 +154,8 @@ TYPED_TEST(MeanRatioTypedTest, RandomElementsMatchEigenEvaluation) {
     ++valid_count;
     const double expected = ReferenceMeanRatio(kType, p);
     ASSERT_GT(expected, 0.0) << "trial " << trial;
-    ASSERT_LE(expected, 1.0 + kTolerance) << "trial " << trial;
-    ASSERT_NEAR(q, expected, kTolerance) << "trial " << trial;
+    ASSERT_LE(expected, 1.0 + kMeanRatioTolerance) << "trial " << trial;
+    ASSERT_NEAR(q, expected, kMeanRatioTolerance) << "trial " << trial;
   }
   EXPECT_EQ(valid_count, 500) << "too few valid random " << TypeName(kType) << " elements";
 }

@@ -15,7 +15,7 @@
 namespace getme::test {
 namespace {
 
-constexpr double kTolerance = 1e-12;
+constexpr double kTransformTolerance = 1e-12;
 
 template <typename Tag>
 class TransformReferenceTest : public ::testing::Test {};
@@ -30,7 +30,7 @@ TYPED_TEST(TransformReferenceTest, TransformMatchesDefinitionOne) {
     const double sigma = random.Uniform(0.05, 3.5);
     const Points expected = ReferenceTransform(kType, ToPoints<kType>(nodes), sigma);
     const Points actual = ToPoints<kType>(TransformElement<kType>(nodes, sigma));
-    EXPECT_LT(MaxDistance(actual, expected), kTolerance)
+    EXPECT_LT(MaxDistance(actual, expected), kTransformTolerance)
         << "trial " << trial << ", sigma " << sigma;
   }
 }
@@ -41,7 +41,7 @@ TYPED_TEST(TransformReferenceTest, MeanEdgeLengthMatchesFaceEdges) {
   for (int trial = 0; trial < 100; ++trial) {
     const ElementNodes<kType> nodes = random.ElementInUnitCube<kType>();
     EXPECT_NEAR(MeanEdgeLength<kType>(nodes),
-                ReferenceMeanEdgeLength(kType, ToPoints<kType>(nodes)), kTolerance)
+                ReferenceMeanEdgeLength(kType, ToPoints<kType>(nodes)), kTransformTolerance)
         << "trial " << trial;
   }
 }
@@ -57,10 +57,10 @@ TYPED_TEST(TransformReferenceTest, ScaleAndRelaxMatchesEquationsEightAndEleven) 
     const Points expected =
         ReferenceScaleAndRelax(kType, ToPoints<kType>(nodes), ToPoints<kType>(transformed), rho);
     EXPECT_LT(MaxDistance(ToPoints<kType>(ScaleAndRelax<kType>(nodes, transformed, rho)), expected),
-              kTolerance)
+              kTransformTolerance)
         << "trial " << trial << ", sigma " << sigma << ", rho " << rho;
     EXPECT_LT(MaxDistance(ToPoints<kType>(RegularizingStep<kType>(nodes, sigma, rho)), expected),
-              kTolerance)
+              kTransformTolerance)
         << "trial " << trial << ", sigma " << sigma << ", rho " << rho;
   }
 }
@@ -81,7 +81,7 @@ TYPED_TEST(TransformReferenceTest, CollapsedElementStaysFinite) {
   collapsed.fill(Vec3(0.25, -1.5, 3.0));
   for (const Vec3& node : RegularizingStep<kType>(collapsed, 1.0, 1.0)) {
     EXPECT_TRUE(node.allFinite());
-    EXPECT_LT((node - Vec3(0.25, -1.5, 3.0)).norm(), kTolerance);
+    EXPECT_LT((node - Vec3(0.25, -1.5, 3.0)).norm(), kTransformTolerance);
   }
 }
 

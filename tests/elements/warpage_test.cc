@@ -16,7 +16,7 @@
 namespace getme::test {
 namespace {
 
-constexpr double kTolerance = 1e-12;
+constexpr double kWarpageTolerance = 1e-12;
 
 TEST(QuadWarpageTest, PlanarQuadrilateralsHaveNoWarpage) {
   UnitRandom random(2001);
@@ -29,7 +29,7 @@ TEST(QuadWarpageTest, PlanarQuadrilateralsHaveNoWarpage) {
                          {w + random.Uniform(-0.1, 0.1), h + random.Uniform(-0.1, 0.1), 0},
                          {random.Uniform(-0.1, 0.1), h + random.Uniform(-0.1, 0.1), 0}};
     const Points q = random.RandomSimilarity()(flat);
-    EXPECT_NEAR(QuadWarpage(q[0], q[1], q[2], q[3]), 0.0, kTolerance) << "trial " << trial;
+    EXPECT_NEAR(QuadWarpage(q[0], q[1], q[2], q[3]), 0.0, kWarpageTolerance) << "trial " << trial;
   }
 }
 
@@ -41,11 +41,11 @@ TEST(QuadWarpageTest, SymmetricallyTwistedSquare) {
     const double cosine = (1.0 - 2.0 * h * h) / (1.0 + 2.0 * h * h);
     const double expected = 1.0 - cosine * cosine * cosine;
     EXPECT_NEAR(QuadWarpage(Vec3(0, 0, 0), Vec3(1, 0, h), Vec3(1, 1, 0), Vec3(0, 1, h)), expected,
-                kTolerance)
+                kWarpageTolerance)
         << "h = " << h;
   }
   EXPECT_NEAR(QuadWarpage(Vec3(0, 0, 0), Vec3(1, 0, 0.5), Vec3(1, 1, 0), Vec3(0, 1, 0.5)),
-              26.0 / 27.0, kTolerance);
+              26.0 / 27.0, kWarpageTolerance);
 }
 
 TEST(QuadWarpageTest, OneLiftedCornerUsesTheSmallerCosine) {
@@ -56,11 +56,11 @@ TEST(QuadWarpageTest, OneLiftedCornerUsesTheSmallerCosine) {
   for (double h : {0.1, 0.5, 1.0, 2.0}) {
     const double expected = 1.0 - std::pow(1.0 + h * h, -3.0);
     EXPECT_NEAR(QuadWarpage(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, h)), expected,
-                kTolerance)
+                kWarpageTolerance)
         << "h = " << h;
   }
   EXPECT_NEAR(QuadWarpage(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 1)), 0.875,
-              kTolerance);
+              kWarpageTolerance);
 }
 
 TEST(QuadWarpageTest, IndependentOfPlacementAndStartingNode) {
@@ -81,7 +81,7 @@ TEST(QuadWarpageTest, ReflexCornerCountsAsMaximallyWarped) {
   // Planar but folded over the diagonal (1,3): node 0 at (0.9,0.9,0) makes a reflex corner, so
   // n0 = (0,0,−0.8) opposes n2 = (0,0,1) while n1, n3 = (0,0,0.1): n̂0·n̂2 = −1 and w = 1 − (−1) = 2.
   EXPECT_NEAR(QuadWarpage(Vec3(0.9, 0.9, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)), 2.0,
-              kTolerance);
+              kWarpageTolerance);
 }
 
 TEST(QuadWarpageTest, DegenerateCornerCountsAsMaximallyWarped) {
@@ -122,7 +122,7 @@ TEST(ElementWarpageTest, HexahedronWithOneLiftedTopNode) {
     Points p = RegularElementPoints(ElementType::kHexahedron);
     p[6].z() += h;
     EXPECT_NEAR(Warpage<ElementType::kHexahedron>(ToNodes<ElementType::kHexahedron>(p)),
-                1.0 - std::pow(1.0 + h * h, -3.0), kTolerance)
+                1.0 - std::pow(1.0 + h * h, -3.0), kWarpageTolerance)
         << "h = " << h;
   }
 }
@@ -136,7 +136,7 @@ TEST(ElementWarpageTest, HexahedronTakesTheWorseOfTwoWarpedFaces) {
   const double top = 1.0 - std::pow(1.0 + 0.09, -3.0);
   const double side = 1.0 - std::pow(1.0 + 0.64, -3.0);
   EXPECT_NEAR(Warpage<ElementType::kHexahedron>(ToNodes<ElementType::kHexahedron>(p)),
-              std::max(top, side), kTolerance);
+              std::max(top, side), kWarpageTolerance);
 }
 
 TEST(ElementWarpageTest, PyramidWarpsOnlyThroughItsBase) {
@@ -146,7 +146,7 @@ TEST(ElementWarpageTest, PyramidWarpsOnlyThroughItsBase) {
   EXPECT_EQ(Warpage<ElementType::kPyramid>(ToNodes<ElementType::kPyramid>(p)), 0.0);
   p[3].z() += 0.5;
   EXPECT_NEAR(Warpage<ElementType::kPyramid>(ToNodes<ElementType::kPyramid>(p)),
-              1.0 - std::pow(1.25, -3.0), kTolerance);
+              1.0 - std::pow(1.25, -3.0), kWarpageTolerance);
 }
 
 TEST(ElementWarpageTest, PrismWarpsOnlyWhenANodeLeavesItsSidePlanes) {
@@ -154,7 +154,8 @@ TEST(ElementWarpageTest, PrismWarpsOnlyWhenANodeLeavesItsSidePlanes) {
   // the quadrilaterals stay planar (only the triangles tilt, and they do not count).
   Points p = RegularElementPoints(ElementType::kPrism);
   p[4].z() += 0.4;
-  EXPECT_NEAR(Warpage<ElementType::kPrism>(ToNodes<ElementType::kPrism>(p)), 0.0, kTolerance);
+  EXPECT_NEAR(Warpage<ElementType::kPrism>(ToNodes<ElementType::kPrism>(p)), 0.0,
+              kWarpageTolerance);
   // Pushing node 3 by 0.5 perpendicular to face (0,1,4,3) (the plane y = 0) makes that face a unit
   // square with one displaced corner, w = 1 − 1.25^(−3); node 3 also leaves the plane of (2,0,3,5)
   // (obliquely, no closed form), and the element takes the larger of the two.
@@ -163,7 +164,7 @@ TEST(ElementWarpageTest, PrismWarpsOnlyWhenANodeLeavesItsSidePlanes) {
   const auto prism = ToNodes<ElementType::kPrism>(q);
   const double front = 1.0 - std::pow(1.25, -3.0);
   const double left = QuadWarpage(prism[2], prism[0], prism[3], prism[5]);
-  EXPECT_NEAR(Warpage<ElementType::kPrism>(prism), std::max(front, left), kTolerance);
+  EXPECT_NEAR(Warpage<ElementType::kPrism>(prism), std::max(front, left), kWarpageTolerance);
   EXPECT_GT(front, 0.0);
   EXPECT_GT(left, 0.0);
 }
@@ -181,7 +182,7 @@ TYPED_TEST(QualityGammaTest, IsTheMinimumOfMeanRatioAndScaledWarpage) {
     const double w = Warpage<kType>(nodes);
     for (double gamma : {0.25, 1.0, 4.0}) {
       EXPECT_NEAR(QualityGamma<kType>(nodes, gamma), std::min(q, gamma * (1.0 - w / 2.0)),
-                  kTolerance)
+                  kWarpageTolerance)
           << "trial " << trial << ", gamma " << gamma;
     }
   }
@@ -190,24 +191,25 @@ TYPED_TEST(QualityGammaTest, IsTheMinimumOfMeanRatioAndScaledWarpage) {
 TEST(QualityGammaTest, ClosedFormCases) {
   // Regular hexahedron: q = 1, w = 0, so q_γ = min(1, γ).
   const auto cube = RegularElement<ElementType::kHexahedron>();
-  EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(cube, 0.25), 0.25, kTolerance);
-  EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(cube, 3.0), 1.0, kTolerance);
+  EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(cube, 0.25), 0.25, kWarpageTolerance);
+  EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(cube, 3.0), 1.0, kWarpageTolerance);
   // Flat-ish hexahedron stretched by a = 0.05: w = 0 and q = 3a^(2/3)/(2 + a²) ≈ 0.2035 < 0.25.
   Points thin = RegularElementPoints(ElementType::kHexahedron);
   for (Eigen::Vector3d& node : thin) node.z() *= 0.05;
   const double q_thin = 3.0 * std::cbrt(0.05 * 0.05) / (2.0 + 0.05 * 0.05);
   ASSERT_LT(q_thin, 0.25);
   EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(ToNodes<ElementType::kHexahedron>(thin), 0.25),
-              q_thin, kTolerance);
+              q_thin, kWarpageTolerance);
   // Cube with node 6 lifted by 1: w = 7/8, so γ(1 − w/2) = 0.25 · 9/16 = 0.140625 decides.
   Points lifted = RegularElementPoints(ElementType::kHexahedron);
   lifted[6].z() += 1.0;
   const auto lifted_hex = ToNodes<ElementType::kHexahedron>(lifted);
   ASSERT_GT(MeanRatio<ElementType::kHexahedron>(lifted_hex), 0.140625);
-  EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(lifted_hex, 0.25), 0.140625, kTolerance);
+  EXPECT_NEAR(QualityGamma<ElementType::kHexahedron>(lifted_hex, 0.25), 0.140625,
+              kWarpageTolerance);
   // A tetrahedron is never warped: q_γ = min(q, γ).
   const auto tet = RegularElement<ElementType::kTetrahedron>();
-  EXPECT_NEAR(QualityGamma<ElementType::kTetrahedron>(tet, 0.25), 0.25, kTolerance);
+  EXPECT_NEAR(QualityGamma<ElementType::kTetrahedron>(tet, 0.25), 0.25, kWarpageTolerance);
 }
 
 }  // namespace

@@ -14,9 +14,9 @@
 namespace getme::meshgen {
 namespace {
 
+using ::getme::NodePosition;
 using ::getme::testing::CensusFaces;
 using ::getme::testing::InvalidElements;
-using ::getme::testing::NodePosition;
 
 // The test-sized artery of docs/thin-layers.md: `getme-meshgen artery OUT --mesh-size 0.5`.
 ArteryOptions SmallArtery() {

@@ -12,10 +12,10 @@
 namespace getme::meshgen {
 namespace {
 
+using ::getme::NodePosition;
 using ::getme::testing::CensusFaces;
 using ::getme::testing::FaceArea;
 using ::getme::testing::InvalidElements;
-using ::getme::testing::NodePosition;
 
 struct HandCase {
   const char* name;

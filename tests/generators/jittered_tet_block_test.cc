@@ -9,10 +9,10 @@
 namespace getme::meshgen {
 namespace {
 
+using ::getme::NodePosition;
 using ::getme::testing::CheckBlockFaces;
 using ::getme::testing::InvalidElements;
 using ::getme::testing::MeanRatios;
-using ::getme::testing::NodePosition;
 
 TEST(JitteredTetBlockTest, HasSixTetrahedraPerCube) {
   absl::StatusOr<Mesh> mesh = JitteredTetBlock(3, 4, 5, 0.2, 1);

@@ -7,10 +7,6 @@
 
 namespace getme::testing {
 
-Vec3 NodePosition(const Mesh& mesh, NodeId node) {
-  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-}
-
 FaceCensus CensusFaces(const Mesh& mesh) {
   FaceCensus census;
   for (ElementId e = 0; e < mesh.element_count(); ++e) {

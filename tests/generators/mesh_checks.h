@@ -26,7 +26,6 @@ FaceCensus CensusFaces(const Mesh& mesh);
 
 std::vector<ElementId> InvalidElements(const Mesh& mesh);
 std::vector<double> MeanRatios(const Mesh& mesh);
-Vec3 NodePosition(const Mesh& mesh, NodeId node);
 // Area of a planar triangle or (as two triangles) quad.
 double FaceArea(const Mesh& mesh, const std::vector<NodeId>& nodes);
 

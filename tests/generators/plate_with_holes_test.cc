@@ -11,11 +11,11 @@
 namespace getme::meshgen {
 namespace {
 
+using ::getme::NodePosition;
 using ::getme::testing::CensusFaces;
 using ::getme::testing::CheckBlockFaces;
 using ::getme::testing::ElementCentroid;
 using ::getme::testing::InvalidElements;
-using ::getme::testing::NodePosition;
 
 constexpr std::int64_t kTestElements = 10'000;
 

@@ -12,12 +12,12 @@
 namespace getme::meshgen {
 namespace {
 
+using ::getme::NodePosition;
 using ::getme::testing::CensusFaces;
 using ::getme::testing::ElementCentroid;
 using ::getme::testing::EnclosedVolume;
 using ::getme::testing::InvalidElements;
 using ::getme::testing::MeanRatios;
-using ::getme::testing::NodePosition;
 
 constexpr std::int64_t kTestElements = 10'000;
 // A grid point next to a cube lies within half a cube diagonal of the cube's centre.

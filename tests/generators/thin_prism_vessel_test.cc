@@ -15,10 +15,10 @@
 namespace getme::meshgen {
 namespace {
 
+using ::getme::NodePosition;
 using ::getme::testing::CensusFaces;
 using ::getme::testing::InvalidElements;
 using ::getme::testing::MeanRatios;
-using ::getme::testing::NodePosition;
 
 std::vector<NodeId> SortedTriangle(std::span<const NodeId> nodes, int first) {
   std::vector<NodeId> key(nodes.begin() + first, nodes.begin() + first + 3);

@@ -14,7 +14,7 @@
 namespace getme::mesh_test {
 namespace {
 
-Mesh BuildOrDie(const MeshSpec& spec) {
+Mesh BuildMixedOrDie(const MeshSpec& spec) {
   absl::StatusOr<Mesh> mesh = BuildMesh(spec);
   EXPECT_TRUE(mesh.ok()) << mesh.status();
   return std::move(mesh).value();
@@ -30,7 +30,7 @@ void ExpectAllElementsValid(const MeshSpec& spec) {
 TEST(MixedTopology, PrismCubeWithPyramidAndTetHasThirteenBoundaryFaces) {
   const MeshSpec spec = PrismCubeWithPyramidAndTet();
   ExpectAllElementsValid(spec);
-  const Mesh mesh = BuildOrDie(spec);
+  const Mesh mesh = BuildMixedOrDie(spec);
   // 5 + 4 + 5 + 5 faces; the prisms share the diagonal quad, prism 0 and the pyramid the x = 1
   // quad, the pyramid and the tetrahedron one triangle: 19 − 2·3.
   EXPECT_EQ(mesh.boundary_face_count(), 13);
@@ -39,7 +39,7 @@ TEST(MixedTopology, PrismCubeWithPyramidAndTetHasThirteenBoundaryFaces) {
 }
 
 TEST(MixedTopology, PrismCubeNeighboursAndNodeElements) {
-  const Mesh mesh = BuildOrDie(PrismCubeWithPyramidAndTet());
+  const Mesh mesh = BuildMixedOrDie(PrismCubeWithPyramidAndTet());
   // Ids: 0 prism, 1 tet, 2 prism, 3 pyramid. Node 2 = (1,1,0) is in all four. Rows follow the
   // canonical order (tet, hex, pyramid, prism; then id): 1, 3, 0, 2.
   EXPECT_EQ(std::vector<ElementId>(mesh.canonical_order().begin(), mesh.canonical_order().end()),
@@ -65,7 +65,7 @@ TEST(MixedTopology, TriangleOnThreeNodesOfAQuadDoesNotMatchIt) {
   const std::int64_t apex = spec.AddNode(Eigen::Vector3d(0.5, -0.5, 0.5));
   spec.AddElement(ElementType::kTetrahedron, {0, 1, 5, apex});
   ExpectAllElementsValid(spec);
-  const Mesh mesh = BuildOrDie(spec);
+  const Mesh mesh = BuildMixedOrDie(spec);
   EXPECT_EQ(mesh.boundary_face_count(), 13 + 4);
   ExpectTopologyMatchesReference(mesh, spec);
 }
@@ -81,7 +81,7 @@ TEST(MixedTopology, TwoTetsShareOneFaceWhateverTheNodeOrder) {
   spec.AddElement(ElementType::kTetrahedron, {0, 1, 2, 3});
   spec.AddElement(ElementType::kTetrahedron, {2, 1, 0, 4});
   ExpectAllElementsValid(spec);
-  const Mesh mesh = BuildOrDie(spec);
+  const Mesh mesh = BuildMixedOrDie(spec);
   EXPECT_EQ(mesh.boundary_face_count(), 6);
   ExpectTopologyMatchesReference(mesh, spec);
 }
@@ -89,7 +89,7 @@ TEST(MixedTopology, TwoTetsShareOneFaceWhateverTheNodeOrder) {
 TEST(MixedTopology, PyramidCellInHexBlockIsConforming) {
   const MeshSpec spec = HexBlockWithPyramidCell();
   ExpectAllElementsValid(spec);
-  const Mesh mesh = BuildOrDie(spec);
+  const Mesh mesh = BuildMixedOrDie(spec);
   ASSERT_EQ(mesh.node_count(), 28);
   EXPECT_EQ(mesh.boundary_face_count(), 24);
   // The block centre and the pyramids' common apex are the interior nodes.
@@ -105,7 +105,7 @@ TEST(MixedTopology, PyramidCellInHexBlockIsConforming) {
 TEST(MixedTopology, PrismCellAgainstHexQuadIsANonConformingBoundary) {
   const MeshSpec spec = HexBlockWithPrismCell();
   ExpectAllElementsValid(spec);
-  const Mesh mesh = BuildOrDie(spec);
+  const Mesh mesh = BuildMixedOrDie(spec);
   // Outside: 23 quads and the two triangles of the split bottom square. Inside: the two top
   // triangles of the prisms and the bottom quad of the hex above them match nothing.
   EXPECT_EQ(mesh.boundary_face_count(), 25 + 3);

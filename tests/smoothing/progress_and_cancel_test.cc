@@ -7,14 +7,14 @@
 namespace getme {
 namespace {
 
-Mesh TestMesh() {
+Mesh ProgressTestMesh() {
   auto mesh = meshgen::HybridBlock(8, 8, 6, 0.3, 21);
   EXPECT_TRUE(mesh.ok()) << mesh.status();
   return std::move(*mesh);
 }
 
 TEST(ProgressTest, OneEventPerIterationThenAFinalEventPerPhase) {
-  Mesh mesh = TestMesh();
+  Mesh mesh = ProgressTestMesh();
   SmoothingParams params;
   params.sequential_cycle = 500;
   std::vector<ProgressEvent> events;
@@ -88,7 +88,7 @@ TEST(ProgressTest, OneEventPerIterationThenAFinalEventPerPhase) {
 }
 
 TEST(CancelTest, CancellingDuringSimultaneousStopsWithinOneIteration) {
-  Mesh mesh = TestMesh();
+  Mesh mesh = ProgressTestMesh();
   CancellationToken cancel;
   std::int64_t last_iteration = 0;
   auto result = Smooth(
@@ -106,7 +106,7 @@ TEST(CancelTest, CancellingDuringSimultaneousStopsWithinOneIteration) {
 }
 
 TEST(CancelTest, CancellingDuringSequentialStopsWithinOneCycle) {
-  Mesh mesh = TestMesh();
+  Mesh mesh = ProgressTestMesh();
   CancellationToken cancel;
   SmoothingParams params;
   params.sequential_cycle = 200;
@@ -127,7 +127,7 @@ TEST(CancelTest, CancellingDuringSequentialStopsWithinOneCycle) {
 }
 
 TEST(ParamsTest, InvalidParametersAreRefusedNamingTheField) {
-  Mesh mesh = TestMesh();
+  Mesh mesh = ProgressTestMesh();
   const testing::CoordinateSnapshot before(mesh);
   SmoothingParams params;
   params.simultaneous_rho = 1.5;

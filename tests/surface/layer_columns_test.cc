@@ -15,26 +15,27 @@
 namespace getme::surface {
 namespace {
 
-constexpr int kCells = 6;
-constexpr int kLayers = 10;
+constexpr int kColumnCells = 6;
+constexpr int kColumnLayers = 10;
 
-Mesh LayerBlock() {
-  absl::StatusOr<Mesh> mesh = meshgen::LayeredHexBlock(kCells, kCells, kLayers, 0.01, 1.3, 0.3, 7);
+Mesh ColumnLayerBlock() {
+  absl::StatusOr<Mesh> mesh =
+      meshgen::LayeredHexBlock(kColumnCells, kColumnCells, kColumnLayers, 0.01, 1.3, 0.3, 7);
   EXPECT_TRUE(mesh.ok()) << mesh.status();
   return std::move(*mesh);
 }
 
 TEST(LayerColumnsTest, AHexahedralLayerBlockIsOneColumnPerWallFaceThroughItsHeight) {
-  const Mesh mesh = LayerBlock();
+  const Mesh mesh = ColumnLayerBlock();
   const LayerColumns columns = FindLayerColumns(mesh);
-  EXPECT_EQ(columns.column_count(), kCells * kCells);
+  EXPECT_EQ(columns.column_count(), kColumnCells * kColumnCells);
   EXPECT_EQ(columns.column_elements(), mesh.element_count());
-  EXPECT_EQ(columns.layers, kLayers);
-  EXPECT_EQ(columns.ends.boundary, kCells * kCells);
+  EXPECT_EQ(columns.layers, kColumnLayers);
+  EXPECT_EQ(columns.ends.boundary, kColumnCells * kColumnCells);
   EXPECT_EQ(columns.conflicting_nodes, 0);
   // Grid node (i, j, k) is node i + (n + 1)(j + (n + 1) k) (structured_grid.h): its level is k and
   // the node below it is the same (i, j) one level down.
-  constexpr NodeId kPerLevel = (kCells + 1) * (kCells + 1);
+  constexpr NodeId kPerLevel = (kColumnCells + 1) * (kColumnCells + 1);
   for (NodeId node = 0; node < mesh.node_count(); ++node) {
     const int k = node / kPerLevel;
     EXPECT_EQ(columns.level[node], k) << "node " << node;
@@ -70,14 +71,14 @@ TEST(LayerColumnsTest, AThinPrismStackGrowsFromOneSideOnly) {
 }
 
 TEST(LayerColumnsTest, HeightsAreWallDistancesAndTheDescriptionKeepsThem) {
-  const Mesh mesh = LayerBlock();
+  const Mesh mesh = ColumnLayerBlock();
   const LayerColumns columns = FindLayerColumns(mesh);
   const WallDistance walls(mesh, columns);
   const KeptLayers kept = DescribeKeptLayers(mesh, columns, walls);
   // One kept column per wall node, each with every level above it.
-  EXPECT_EQ(kept.column_count(), (kCells + 1) * (kCells + 1));
+  EXPECT_EQ(kept.column_count(), (kColumnCells + 1) * (kColumnCells + 1));
   for (std::int64_t c = 0; c < kept.column_count(); ++c) {
-    ASSERT_EQ(kept.Nodes(c).size(), static_cast<std::size_t>(kLayers));
+    ASSERT_EQ(kept.Nodes(c).size(), static_cast<std::size_t>(kColumnLayers));
     // The wall is the plane z = 0: its normal is z, and a node's distance from it is its z.
     EXPECT_NEAR(kept.direction[c][2], 1.0, 1e-12);
     for (std::size_t k = 0; k < kept.Nodes(c).size(); ++k) {
@@ -86,8 +87,8 @@ TEST(LayerColumnsTest, HeightsAreWallDistancesAndTheDescriptionKeepsThem) {
   }
   const std::vector<double> quality(mesh.element_count(), 0.5);
   const LayerHeights heights = MeasureLayerHeights(mesh, columns, walls, kept, quality);
-  EXPECT_EQ(heights.columns, (kCells + 1) * (kCells + 1));
-  EXPECT_EQ(heights.layers, kLayers);
+  EXPECT_EQ(heights.columns, (kColumnCells + 1) * (kColumnCells + 1));
+  EXPECT_EQ(heights.layers, kColumnLayers);
   for (NodeId node = 0; node < mesh.node_count(); ++node) {
     if (columns.level[node] < 1) continue;
     EXPECT_NEAR(heights.height[node], mesh.z()[node] - mesh.z()[columns.below[node]], 1e-12);

@@ -24,14 +24,14 @@
 namespace getme::surface {
 namespace {
 
-constexpr int kCells = 4;
+constexpr int kSlideCells = 4;
 
-bool OnBound(double c) { return c == 0.0 || c == kCells; }
+bool OnBound(double c) { return c == 0.0 || c == kSlideCells; }
 
-// HexCube(kCells) with every coordinate that is not on the cube's bounds moved by up to 0.3: a
+// HexCube(kSlideCells) with every coordinate that is not on the cube's bounds moved by up to 0.3: a
 // face node moves within its face, an edge node along its edge, corners stay.
 Mesh DisplacedCube(std::uint64_t seed) {
-  Mesh mesh = test::HexCube(kCells);
+  Mesh mesh = test::HexCube(kSlideCells);
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> offset(-0.3, 0.3);
   for (auto coordinate : {mesh.x(), mesh.y(), mesh.z()}) {
@@ -65,8 +65,8 @@ TEST(SurfaceSlideTest, BoundaryNodesSlideOnTheirFacesAndEdgesAndLiftQMin) {
   ::testing::Test::RecordProperty("q_min_fixed", std::to_string(fixed_result->after.q_min));
   ::testing::Test::RecordProperty("q_min_slide", std::to_string(slid_result->after.q_min));
 
-  // The cube spans [0, kCells]³ with a diagonal of about 7: 1e-9 of it.
-  const double tolerance = 1e-9 * std::sqrt(3.0) * kCells;
+  // The cube spans [0, kSlideCells]³ with a diagonal of about 7: 1e-9 of it.
+  const double tolerance = 1e-9 * std::sqrt(3.0) * kSlideCells;
   std::int64_t moved_boundary = 0;
   for (NodeId node = 0; node < input.node_count(); ++node) {
     const int bounds = BoundCount(input, node);
@@ -80,7 +80,7 @@ TEST(SurfaceSlideTest, BoundaryNodesSlideOnTheirFacesAndEdgesAndLiftQMin) {
       } else {
         // The other coordinates stay within the cube.
         EXPECT_GE(out[c], -tolerance) << "node " << node;
-        EXPECT_LE(out[c], kCells + tolerance) << "node " << node;
+        EXPECT_LE(out[c], kSlideCells + tolerance) << "node " << node;
       }
     }
     if (bounds == 3) {

@@ -15,7 +15,7 @@ constexpr std::uint32_t kDimensionTag = 0x0A;
 constexpr std::uint32_t kVariableTag = 0x0B;
 constexpr std::uint32_t kAttributeTag = 0x0C;
 // As in the Exodus reader: no real file needs more than 16 values per byte of file.
-constexpr std::uint64_t kValuesPerFileByte = 16;
+constexpr std::uint64_t kHeaderValuesPerFileByte = 16;
 
 // Reads the header big-endian, as the specification writes it, never past the file's end.
 class HeaderCursor {
@@ -153,7 +153,7 @@ absl::Status CheckNetcdfClassicHeader(const std::string& path) {
     if (absl::Status status = SkipName(cursor, "dimension"); !status.ok()) return status;
     const std::optional<std::uint64_t> length = cursor.Count();
     if (!length.has_value()) return Malformed(cursor, "dimension length");
-    if (*length > kValuesPerFileByte * size) {
+    if (*length > kHeaderValuesPerFileByte * size) {
       return absl::InvalidArgumentError(
           absl::StrCat("netCDF header, byte ", cursor.offset(), ": dimension ", k, " has length ",
                        *length, ", more than this ", size, "-byte file can hold"));

@@ -14,6 +14,12 @@ namespace getme {
 
 using Vec3 = Eigen::Vector3d;
 
+// One node's coordinates gathered from the structure-of-arrays mesh (for setup code, not for the
+// per-element kernels, which gather through ElementNodes).
+inline Vec3 NodePosition(const Mesh& mesh, NodeId node) {
+  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
+}
+
 // The nodes of one element as small fixed-size arrays: what every per-element kernel works on.
 template <ElementType kType>
 using ElementNodes = std::array<Vec3, ElementTable<kType>::kNodes>;

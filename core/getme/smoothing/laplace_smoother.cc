@@ -8,7 +8,7 @@
 namespace getme {
 namespace {
 
-constexpr std::int64_t kNodeGrain = 4096;
+constexpr std::int64_t kLaplaceNodeGrain = 4096;
 
 struct Point {
   double x, y, z;
@@ -44,7 +44,7 @@ absl::StatusOr<PhaseSummary> RunLaplace(SmoothingContext& context) {
       break;
     }
     context.pool.ParallelFor(
-        mesh.node_count(), kNodeGrain, [&](std::int64_t begin, std::int64_t end) {
+        mesh.node_count(), kLaplaceNodeGrain, [&](std::int64_t begin, std::int64_t end) {
           for (std::int64_t node = begin; node < end; ++node) {
             Point p{mesh.x()[node], mesh.y()[node], mesh.z()[node]};
             if (context.movable[node] && neighbours.Row(node).size() > 0) {

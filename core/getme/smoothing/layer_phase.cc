@@ -15,10 +15,6 @@ namespace {
 // polish sweep over the column nodes, so the cap bounds the phase at a small part of a run.
 constexpr int kMaxFollowSweeps = 30;
 
-Vec3 Position(const Mesh& mesh, NodeId node) {
-  return Vec3(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
-}
-
 void Place(Mesh& mesh, NodeId node, const Vec3& p) {
   mesh.x()[node] = p[0];
   mesh.y()[node] = p[1];
@@ -58,7 +54,7 @@ class ColumnMover {
     const auto add = [&](NodeId node, std::int64_t index) {
       if (!context_.column_movable[node]) return;
       moved_.push_back(node);
-      old_.push_back(Position(mesh_, node));
+      old_.push_back(NodePosition(mesh_, node));
       kept_index_.push_back(index);
     };
     add(wall, -1);
@@ -70,7 +66,7 @@ class ColumnMover {
     const LocalQuality before = Measure();
     double step = 1.0;
     for (int attempt = 0; attempt <= kLayerBacktrackingSteps; ++attempt, step *= 0.5) {
-      const Vec3 wall_start = Position(mesh_, wall);
+      const Vec3 wall_start = NodePosition(mesh_, wall);
       Vec3 wall_now = wall_start;
       Vec3 normal = ColumnNormal(c);
       bool kept_heights = true;
@@ -169,12 +165,12 @@ absl::StatusOr<PhaseSummary> RunLayers(SmoothingContext& context, LayerStage sta
     for (std::int64_t c = 0; c < layers.column_count(); ++c) {
       if (context.Cancelled()) return absl::CancelledError("smoothing cancelled");
       const NodeId wall = layers.wall[c];
-      Vec3 target = Position(mesh, wall);
+      Vec3 target = NodePosition(mesh, wall);
       if (follow_wall) {
         const std::span<const NodeId> neighbours = layers.WallNeighbours(c);
         if (!context.column_movable[wall] || neighbours.empty()) continue;
         target = Vec3::Zero();
-        for (NodeId n : neighbours) target += Position(mesh, n);
+        for (NodeId n : neighbours) target += NodePosition(mesh, n);
         target /= static_cast<double>(neighbours.size());
       }
       const ColumnMove move = mover.TryMove(c, target, follow_wall);

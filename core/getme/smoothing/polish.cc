@@ -22,7 +22,7 @@ namespace {
 
 // Nodes per ParallelFor chunk within one colour: a node step costs a few dozen element
 // evaluations, so this many amortise the scheduling.
-constexpr std::int64_t kNodeGrain = 64;
+constexpr std::int64_t kPolishNodeGrain = 64;
 
 // Share of the step to the floor that the next trial takes after a step below it (PolishNode).
 constexpr double kFloorSafety = 0.9;
@@ -308,10 +308,10 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
       }
       const std::span<const NodeId> nodes = colouring.Colour(c);
       const auto count = static_cast<std::int64_t>(nodes.size());
-      const std::int64_t chunks = (count + kNodeGrain - 1) / kNodeGrain;
+      const std::int64_t chunks = (count + kPolishNodeGrain - 1) / kPolishNodeGrain;
       refused_per_chunk.assign(chunks, 0);
       moved_per_chunk.assign(chunks, 0);
-      context.pool.ParallelFor(count, kNodeGrain, [&](std::int64_t begin, std::int64_t end) {
+      context.pool.ParallelFor(count, kPolishNodeGrain, [&](std::int64_t begin, std::int64_t end) {
         std::int64_t chunk_refused = 0;
         std::int64_t chunk_moved = 0;
         for (std::int64_t i = begin; i < end; ++i) {
@@ -319,8 +319,8 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
           chunk_refused += step == NodeStep::kRefused;
           chunk_moved += step == NodeStep::kMoved;
         }
-        refused_per_chunk[begin / kNodeGrain] += chunk_refused;
-        moved_per_chunk[begin / kNodeGrain] += chunk_moved;
+        refused_per_chunk[begin / kPolishNodeGrain] += chunk_refused;
+        moved_per_chunk[begin / kPolishNodeGrain] += chunk_moved;
       });
       for (std::int64_t r : refused_per_chunk) refused += r;
       for (std::int64_t m : moved_per_chunk) moved += m;

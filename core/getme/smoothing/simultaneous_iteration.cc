@@ -13,7 +13,7 @@ namespace {
 
 // Nodes per ParallelFor chunk of the node pass: a node costs only its sums, so chunks are small
 // enough that two threads get a dozen each on a 100k-element mesh (25k nodes).
-constexpr std::int64_t kNodeGrain = 1024;
+constexpr std::int64_t kSimultaneousNodeGrain = 1024;
 
 }  // namespace
 
@@ -76,7 +76,7 @@ void SimultaneousIteration::TransformTile(const SmoothingContext& context,
 // caller's best state need it).
 void SimultaneousIteration::UpdateNodes(SmoothingContext& context) {
   context.pool.ParallelFor(
-      context.mesh.node_count(), kNodeGrain,
+      context.mesh.node_count(), kSimultaneousNodeGrain,
       [&](std::int64_t begin, std::int64_t end) { UpdateNodeRange(context, begin, end); });
 }
 

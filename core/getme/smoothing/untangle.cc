@@ -44,7 +44,7 @@ constexpr double kMaxStepLengths = 0.5;
 constexpr double kSweepTolerance = 1e-6;
 // Nodes per ParallelFor chunk within one colour: smaller than polish.cc's, since most nodes of a
 // colour are skipped (inactive) and the active ones cluster around the tangles.
-constexpr std::int64_t kNodeGrain = 16;
+constexpr std::int64_t kUntangleNodeGrain = 16;
 
 template <ElementType kType>
 constexpr double RegularDeterminant() {
@@ -357,7 +357,7 @@ absl::StatusOr<PhaseSummary> Untangler::Run() {
     ++sweep;
     for (int c = 0; c < colouring.colour_count(); ++c) {
       const std::span<const NodeId> nodes = colouring.Colour(c);
-      context_.pool.ParallelFor(static_cast<std::int64_t>(nodes.size()), kNodeGrain,
+      context_.pool.ParallelFor(static_cast<std::int64_t>(nodes.size()), kUntangleNodeGrain,
                                 [&](std::int64_t begin, std::int64_t end) {
                                   for (std::int64_t i = begin; i < end; ++i) {
                                     // Nodes whose elements all had zero objective at the start

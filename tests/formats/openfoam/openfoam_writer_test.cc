@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 using testing::CasePath;
 using testing::ReadText;
 
-MeshDocument ReadCase(const std::string& name) {
+MeshDocument ReadWrittenCase(const std::string& name) {
   absl::StatusOr<MeshDocument> document = ReadOpenFoam(CasePath(name));
   EXPECT_TRUE(document.ok()) << document.status();
   return document.ok() ? *std::move(document) : MeshDocument{};
@@ -60,7 +60,7 @@ TEST(OpenFoamWriter, UnchangedMeshIsWrittenBackAsRead) {
   for (const char* name :
        {"box_ascii", "box_binary", "box_binary_gz", "mixed_ascii", "mixed_binary", "poly_ascii"}) {
     SCOPED_TRACE(name);
-    const MeshDocument document = ReadCase(name);
+    const MeshDocument document = ReadWrittenCase(name);
     absl::StatusOr<std::vector<PolyMeshFile>> files = SerializeOpenFoam(document, document.as_read);
     ASSERT_TRUE(files.ok()) << files.status();
     const std::string directory = CasePath(name) + "/constant/polyMesh/";
@@ -96,7 +96,7 @@ TEST(OpenFoamWriter, UnchangedMeshIsWrittenBackAsRead) {
 TEST(OpenFoamWriter, MovedPointsAreAllThatChangesAndCheckMeshAcceptsThem) {
   for (const char* name : {"mixed_ascii", "box_binary_gz"}) {
     SCOPED_TRACE(name);
-    MeshDocument document = ReadCase(name);
+    MeshDocument document = ReadWrittenCase(name);
     // Scale by 2 and shift by (1, 0, 0): every cell stays valid, the bounding box is known.
     std::vector<double>& xyz = document.grid.points.reals;
     for (std::size_t i = 0; i < xyz.size(); ++i) xyz[i] = 2 * xyz[i] + (i % 3 == 0 ? 1.0 : 0.0);
@@ -160,7 +160,7 @@ TEST(OpenFoamWriter, BuildsThePolyMeshOfAnotherFormat) {
     // as gmshToFoam's six patches hold.
     ASSERT_EQ(again->openfoam->patches.size(), 1u);
     EXPECT_EQ(again->openfoam->patches[0].name, "defaultFaces");
-    const MeshDocument gmsh_to_foam = ReadCase("mixed_ascii");
+    const MeshDocument gmsh_to_foam = ReadWrittenCase("mixed_ascii");
     std::int64_t boundary_faces = 0;
     for (const OpenFoamPatch& patch : gmsh_to_foam.openfoam->patches) {
       boundary_faces += patch.face_count;
@@ -177,7 +177,7 @@ TEST(OpenFoamWriter, OutputPathNamesACaseOrAPolyMeshDirectory) {
 }
 
 TEST(OpenFoamWriter, RefusesWhatItCannotWrite) {
-  MeshDocument document = ReadCase("box_ascii");
+  MeshDocument document = ReadWrittenCase("box_ascii");
   // Cells a polyMesh built from another format cannot take as one of the four shapes.
   MeshDocument foreign;
   foreign.grid = document.grid;
