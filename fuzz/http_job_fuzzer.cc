@@ -1,5 +1,5 @@
 // libFuzzer target: the body of the HTTP gateway's POST /v1/jobs, through the same function the
-// endpoint calls (CreateJobFromJson: protobuf JSON, then the checks every front end shares). The
+// endpoint calls (SubmissionFromJson: protobuf JSON, then the checks every front end shares). The
 // job is created but not queued, so no engine runs.
 #include <cstddef>
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include "fuzz_check.h"
 #include "getme/v1/smoother.pb.h"
 #include "getme_server/http_json.h"
-#include "getme_server/job_registry.h"
+#include "getme_server/job.h"
 #include "getme_server/job_submission.h"
 #include "getme_server/server_options.h"
 #include "getme_wire/mesh_fields.h"
@@ -48,22 +48,30 @@ void CheckErrorBody(const absl::Status& status) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace getme;
-  static server::JobRegistry registry(/*max_queued_jobs=*/1, absl::Minutes(1));
   static const server::ServerOptions options = fuzz::Options();
   fuzz::QuietLogging();
   const std::string body(reinterpret_cast<const char*>(data), size);
 
-  absl::StatusOr<std::shared_ptr<server::Job>> job =
-      server::CreateJobFromJson(body, registry, options, /*metrics=*/nullptr);
-  if (!fuzz::Accepted(job.status(), "POST /v1/jobs")) {
-    fuzz::CheckErrorBody(job.status());
+  absl::StatusOr<server::JobSubmission> submission =
+      server::SubmissionFromJson(body, options, /*keep_upload=*/true);
+  if (!fuzz::Accepted(submission.status(), "POST /v1/jobs")) {
+    fuzz::CheckErrorBody(submission.status());
     return 0;
   }
+  // What a shared job store hands to another replica is the body's mesh, byte for byte.
+  v1::Mesh kept;
+  fuzz::Check(kept.ParseFromString(submission->received.whole_mesh),
+              "the kept upload does not parse as a mesh");
 
   // An accepted body is a mesh the element limit allows, and the job says what it holds.
   v1::CreateJobRequest request;
   fuzz::CheckOk(server::FromJson(body, request), "FromJson of an accepted body");
-  const v1::Job described = (*job)->Describe();
+  fuzz::Check(google::protobuf::util::MessageDifferencer::Equals(kept, request.mesh()),
+              "the kept upload is not the body's mesh");
+  const server::Job job("fuzz", std::move(submission->mesh), submission->upload_bytes,
+                        submission->params, submission->header.result_options(),
+                        options.progress_interval);
+  const v1::Job described = job.Describe();
   fuzz::Check(
       static_cast<std::int64_t>(described.elements()) == wire::WireElementCount(request.mesh()) &&
           described.elements() <= static_cast<std::uint64_t>(fuzz::kMaxElements),

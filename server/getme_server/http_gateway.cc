@@ -70,8 +70,8 @@ bool SendEvent(httplib::DataSink& sink, absl::string_view name, const std::strin
 // slow browser only skips intermediate events and never holds the job up), then the result
 // summary of a SUCCEEDED job and the job's final description. False (connection dropped) when a
 // write fails: the browser went away.
-bool WriteJobEvents(const Job& job, ProgressFanout::Watcher& watcher,
-                    const std::atomic<bool>& stopping, httplib::DataSink& sink) {
+bool WriteJobEvents(const JobHandle& job, EventSource& watcher, const std::atomic<bool>& stopping,
+                    httplib::DataSink& sink) {
   const std::string retry = "retry: 2000\n\n";  // EventSource reconnects after 2 s
   if (!sink.write(retry.data(), retry.size())) return false;
   absl::Time last_write = absl::Now();
@@ -79,15 +79,15 @@ bool WriteJobEvents(const Job& job, ProgressFanout::Watcher& watcher,
   bool ended = false;
   while (!ended && !stopping.load()) {
     switch (watcher.Next(kStreamPoll, event)) {
-      case ProgressFanout::NextResult::kEvent:
+      case EventSource::NextResult::kEvent:
         if (!SendEvent(sink, "progress", ToJson(event))) return false;
         last_write = absl::Now();
         ended = event.final();
         break;
-      case ProgressFanout::NextResult::kEnded:
+      case EventSource::NextResult::kEnded:
         ended = true;
         break;
-      case ProgressFanout::NextResult::kTimeout:
+      case EventSource::NextResult::kTimeout:
         if (absl::Now() - last_write >= kStreamKeepAlive) {
           const std::string comment = ": keep-alive\n\n";
           if (!sink.write(comment.data(), comment.size())) return false;
@@ -138,9 +138,11 @@ absl::StatusOr<std::pair<std::string, int>> SplitHostPort(const std::string& add
 
 }  // namespace
 
-HttpGateway::HttpGateway(JobRegistry& registry, const ServerOptions& options,
-                         ServerMetrics& metrics, const Authenticator& authenticator)
-    : registry_(registry),
+HttpGateway::HttpGateway(JobDirectory& jobs, const JobRegistry& local_jobs,
+                         const ServerOptions& options, ServerMetrics& metrics,
+                         const Authenticator& authenticator)
+    : jobs_(jobs),
+      local_jobs_(local_jobs),
       options_(options),
       metrics_(metrics),
       authenticator_(authenticator),
@@ -196,10 +198,11 @@ void HttpGateway::Stop() {
   }
 }
 
-absl::StatusOr<std::shared_ptr<Job>> HttpGateway::FindOwnJob(const httplib::Request& req) const {
+absl::StatusOr<std::shared_ptr<JobHandle>> HttpGateway::FindOwnJob(
+    const httplib::Request& req) const {
   absl::StatusOr<std::string> caller = CallerOf(req);
   if (!caller.ok()) return caller.status();
-  return registry_.Find(req.matches[1], *caller);
+  return jobs_.FindJob(req.matches[1], *caller);
 }
 
 void HttpGateway::AddRoutes() {
@@ -261,7 +264,7 @@ void HttpGateway::AddRoutes() {
     res.set_content("{\"status\": \"SERVING\"}", kJson);
   });
   http_->Get("/readyz", [this](const httplib::Request&, httplib::Response& res) {
-    if (registry_.accepting()) {
+    if (jobs_.accepting()) {
       res.set_content("{\"status\": \"READY\"}", kJson);
     } else {
       ReplyError(res, absl::UnavailableError("draining: the server is shutting down and accepts "
@@ -269,8 +272,8 @@ void HttpGateway::AddRoutes() {
     }
   });
   http_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
-    JobsNow now{registry_.ListAllOwners(), registry_.QueuedCount(), options_.workers,
-                registry_.accepting(), ReadProcessMemory()};
+    JobsNow now{local_jobs_.ListAllOwners(), jobs_.QueuedCount(), options_.workers,
+                jobs_.accepting(), ReadProcessMemory()};
     res.set_content(PrometheusText(metrics_.Read(), now), "text/plain; version=0.0.4");
   });
 
@@ -278,35 +281,36 @@ void HttpGateway::AddRoutes() {
     absl::StatusOr<std::string> caller = CallerOf(req);
     if (!caller.ok()) return ReplyError(res, caller.status());
     v1::ListJobsResponse list;
-    for (const auto& job : registry_.List(*caller)) *list.add_jobs() = job->Describe();
+    for (v1::Job& job : jobs_.DescribeJobs(*caller)) *list.add_jobs() = std::move(job);
     ReplyJson(res, list);
   });
   http_->Post("/v1/jobs", [this](const httplib::Request& req, httplib::Response& res) {
     absl::StatusOr<std::string> caller = CallerOf(req);
     if (!caller.ok()) return ReplyError(res, caller.status());
-    absl::StatusOr<std::shared_ptr<Job>> job =
-        CreateJobFromJson(req.body, registry_, options_, &metrics_);
-    if (!job.ok()) return ReplyError(res, job.status());
-    if (auto s = registry_.Submit(*job, *caller); !s.ok()) return ReplyError(res, s);
-    spdlog::info("job={} queued by HTTP POST /v1/jobs from {}{}{}", (*job)->id(), req.remote_addr,
-                 caller->empty() ? "" : " owner=", *caller);
-    ReplyJson(res, (*job)->Describe());
+    absl::StatusOr<JobSubmission> submission =
+        SubmissionFromJson(req.body, options_, jobs_.keeps_uploads());
+    if (!submission.ok()) return ReplyError(res, submission.status());
+    absl::StatusOr<SubmittedJob> submitted = jobs_.Submit(*std::move(submission), *caller);
+    if (!submitted.ok()) return ReplyError(res, submitted.status());
+    spdlog::info("job={} queued by HTTP POST /v1/jobs from {}{}{}", submitted->job->id(),
+                 req.remote_addr, caller->empty() ? "" : " owner=", *caller);
+    ReplyJson(res, submitted->job->Describe());
   });
   http_->Get(R"(/v1/jobs/([^/:]+))", [this](const httplib::Request& req, httplib::Response& res) {
-    absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
+    absl::StatusOr<std::shared_ptr<JobHandle>> job = FindOwnJob(req);
     if (!job.ok()) return ReplyError(res, job.status());
     ReplyJson(res, (*job)->Describe());
   });
   http_->Post(R"(/v1/jobs/([^/:]+):cancel)",
               [this](const httplib::Request& req, httplib::Response& res) {
-                absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
+                absl::StatusOr<std::shared_ptr<JobHandle>> job = FindOwnJob(req);
                 if (!job.ok()) return ReplyError(res, job.status());
                 (*job)->Cancel(absl::StrCat("HTTP cancel from ", req.remote_addr));
                 ReplyJson(res, (*job)->Describe());
               });
   http_->Get(R"(/v1/jobs/([^/:]+)/report)", [this](const httplib::Request& req,
                                                    httplib::Response& res) {
-    absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
+    absl::StatusOr<std::shared_ptr<JobHandle>> job = FindOwnJob(req);
     if (!job.ok()) return ReplyError(res, job.status());
     std::optional<v1::SmoothResult> summary = (*job)->Summary();
     if (!summary.has_value()) {
@@ -320,7 +324,7 @@ void HttpGateway::AddRoutes() {
   });
   http_->Get(
       R"(/v1/jobs/([^/:]+)/trace)", [this](const httplib::Request& req, httplib::Response& res) {
-        absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
+        absl::StatusOr<std::shared_ptr<JobHandle>> job = FindOwnJob(req);
         if (!job.ok()) return ReplyError(res, job.status());
         std::vector<std::string> events;
         for (const v1::ProgressEvent& event : (*job)->Trace()) {
@@ -330,7 +334,7 @@ void HttpGateway::AddRoutes() {
       });
   http_->Get(R"(/v1/jobs/([^/:]+)/events)",
              [this](const httplib::Request& req, httplib::Response& res) {
-               absl::StatusOr<std::shared_ptr<Job>> job = FindOwnJob(req);
+               absl::StatusOr<std::shared_ptr<JobHandle>> job = FindOwnJob(req);
                if (!job.ok()) return ReplyError(res, job.status());
                if (open_streams_.fetch_add(1) >= kMaxEventStreams) {
                  open_streams_.fetch_sub(1);
@@ -338,7 +342,7 @@ void HttpGateway::AddRoutes() {
                      res, absl::ResourceExhaustedError(absl::StrCat(
                               kMaxEventStreams, " event streams are open already; retry later")));
                }
-               std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
+               std::shared_ptr<EventSource> watcher = (*job)->WatchEvents();
                res.set_header("Cache-Control", "no-cache");
                res.set_chunked_content_provider(
                    "text/event-stream",

@@ -8,6 +8,7 @@
 #include "absl/status/status.h"
 #include "absl/status/statusor.h"
 #include "getme_server/authenticator.h"
+#include "getme_server/job_directory.h"
 #include "getme_server/job_registry.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
@@ -21,15 +22,17 @@ namespace getme::server {
 
 // The HTTP/JSON front end beside gRPC (docs/http.md): health, readiness, Prometheus metrics, the
 // jobs API with Server-Sent Events progress, and the dashboard at "/". It works on the same
-// registry and jobs as the gRPC service and creates jobs through the same CreateJob. With
+// job directory as the gRPC service and checks requests the same way (job_submission.h). With
 // authentication on, /v1/ and /metrics need `Authorization: Bearer <token>` (401 otherwise) and
 // a caller sees only its own jobs; the probes and the dashboard's files stay open. With
 // options.tls_cert it serves HTTPS only (and with tls_client_ca, only to clients with a
 // certificate that CA signed).
 class HttpGateway {
  public:
-  HttpGateway(JobRegistry& registry, const ServerOptions& options, ServerMetrics& metrics,
-              const Authenticator& authenticator);
+  // `jobs` is where jobs are queued and found; `local_jobs` the ones this process runs (the
+  // same registry without a shared job store), for /metrics.
+  HttpGateway(JobDirectory& jobs, const JobRegistry& local_jobs, const ServerOptions& options,
+              ServerMetrics& metrics, const Authenticator& authenticator);
   ~HttpGateway();  // Stop()
   HttpGateway(const HttpGateway&) = delete;
   HttpGateway& operator=(const HttpGateway&) = delete;
@@ -47,9 +50,10 @@ class HttpGateway {
   absl::StatusOr<std::string> CallerOf(const httplib::Request& req) const;
   // The job a /v1/jobs/{id}... request names, if it is the caller's: another owner's job is
   // NOT_FOUND, word for word like an unknown id.
-  absl::StatusOr<std::shared_ptr<Job>> FindOwnJob(const httplib::Request& req) const;
+  absl::StatusOr<std::shared_ptr<JobHandle>> FindOwnJob(const httplib::Request& req) const;
 
-  JobRegistry& registry_;
+  JobDirectory& jobs_;
+  const JobRegistry& local_jobs_;
   const ServerOptions options_;
   ServerMetrics& metrics_;
   const Authenticator& authenticator_;

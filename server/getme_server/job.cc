@@ -5,6 +5,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
 #include "getme/smoothing/smoother.h"
+#include "getme_server/job_result_stream.h"
 #include "getme_wire/enums.h"
 #include "getme_wire/progress.h"
 #include "getme_wire/status.h"
@@ -232,6 +233,15 @@ absl::StatusOr<JobResult> Job::TakeResult() {
   result_.reset();
   result_taken_ = true;
   return taken;
+}
+
+absl::StatusOr<std::unique_ptr<ResultStream>> Job::TakeResultStream() {
+  absl::StatusOr<JobResult> result = TakeResult();
+  if (!result.ok()) return result.status();
+  // The stream lives no longer than the call that fetches it; the job outlives that call (the
+  // handler holds it).
+  return std::make_unique<JobResultStream>(
+      *std::move(result), [this](JobResult back) { RestoreResult(std::move(back)); });
 }
 
 void Job::RestoreResult(JobResult result) {

@@ -13,6 +13,7 @@
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_server/job_handle.h"
 #include "getme_server/job_run.h"
 #include "getme_server/job_trace.h"
 #include "getme_server/progress_fanout.h"
@@ -24,7 +25,7 @@ namespace getme::server {
 // One smoothing job's state machine: QUEUED → RUNNING → SUCCEEDED | FAILED | CANCELLED (QUEUED →
 // CANCELLED when cancelled before a worker takes it). Thread-safe; shared by the registry, a worker
 // and the handlers watching it.
-class Job {
+class Job : public JobHandle {
  public:
   // `upload_bytes` is the encoded size of the uploaded mesh. `metrics` (may be null) counts the
   // job's work and outcome; it must outlive the job.
@@ -32,7 +33,7 @@ class Job {
       v1::ResultOptions options, absl::Duration progress_interval,
       ServerMetrics* metrics = nullptr);
 
-  const std::string& id() const { return id_; }
+  const std::string& id() const override { return id_; }
   // Encoded size of the uploaded mesh: what the job counts against --max_queued_bytes.
   std::int64_t upload_bytes() const { return upload_bytes_; }
 
@@ -41,24 +42,25 @@ class Job {
   // `start` is the start time the job reports; --max_job_time counts from the same instant.
   void Run(absl::Time start);
   // Queued: CANCELLED at once. Running: the engine stops within one iteration. Final: no-op.
-  void Cancel(absl::string_view reason);
+  void Cancel(absl::string_view reason) override;
   // Running: the engine stops within one iteration and the job FAILS with DEADLINE_EXCEEDED
   // naming the limit. Otherwise a no-op.
   void StopForTimeLimit(absl::Duration limit);
 
   v1::JobState state() const;
-  bool final() const;
-  v1::Job Describe() const;
+  bool final() const override;
+  v1::Job Describe() const override;
   // A watcher of the progress events, starting with the latest one.
   std::shared_ptr<ProgressFanout::Watcher> Watch() { return fanout_.Watch(); }
+  std::shared_ptr<EventSource> WatchEvents() override { return Watch(); }
   // The job's outcome: OK for SUCCEEDED, else the status it failed or was cancelled with.
-  absl::Status outcome() const;
+  absl::Status outcome() const override;
   // The summary of a SUCCEEDED job (quality before/after with histograms, phases), kept after
   // the result itself was fetched or expired; nullopt for other states.
-  std::optional<v1::SmoothResult> Summary() const;
+  std::optional<v1::SmoothResult> Summary() const override;
   // The job's events so far, thinned to at most about kMaxTrace (every phase_done and the final
   // event kept), so a dashboard opened late or reloaded can draw the whole run.
-  std::vector<v1::ProgressEvent> Trace() const;
+  std::vector<v1::ProgressEvent> Trace() const override;
   static constexpr std::size_t kMaxTrace = JobTrace::kMaxEvents;
   // Element transforms per second since the job started running (0 unless RUNNING): a
   // simultaneous-type iteration transforms every element, a sequential pick one.
@@ -67,6 +69,8 @@ class Job {
   // Hands the result out once. FAILED/CANCELLED jobs give their outcome, unfinished ones
   // FAILED_PRECONDITION, fetched or expired results NOT_FOUND.
   absl::StatusOr<JobResult> TakeResult();
+  // TakeResult as the messages GetResult sends; GiveBack restores the result.
+  absl::StatusOr<std::unique_ptr<ResultStream>> TakeResultStream() override;
   // Gives back a result TakeResult handed out whose download did not complete, so the caller can
   // fetch it again (until the time to live passes).
   void RestoreResult(JobResult result);

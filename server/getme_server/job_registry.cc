@@ -12,10 +12,13 @@
 namespace getme::server {
 
 JobRegistry::JobRegistry(int max_queued_jobs, absl::Duration result_ttl,
-                         std::int64_t max_queued_bytes)
+                         std::int64_t max_queued_bytes, absl::Duration progress_interval,
+                         ServerMetrics* metrics)
     : max_queued_jobs_(max_queued_jobs),
       max_queued_bytes_(max_queued_bytes),
-      result_ttl_(result_ttl) {
+      result_ttl_(result_ttl),
+      progress_interval_(progress_interval),
+      metrics_(metrics) {
   sweeper_ = std::thread([this] { SweepLoop(); });
 }
 
@@ -82,6 +85,35 @@ absl::Status JobRegistry::Submit(std::shared_ptr<Job> job, std::string owner) {
   }
   queue_changed_.notify_one();
   return absl::OkStatus();
+}
+
+absl::StatusOr<SubmittedJob> JobRegistry::Submit(JobSubmission submission, std::string owner) {
+  auto job = std::make_shared<Job>(NewJobId(), std::move(submission.mesh), submission.upload_bytes,
+                                   submission.params, submission.header.result_options(),
+                                   progress_interval_, metrics_);
+  // Watching before queueing: the caller sees every event from the first one.
+  std::shared_ptr<EventSource> events = job->Watch();
+  if (auto s = Submit(job, std::move(owner)); !s.ok()) return s;
+  return SubmittedJob{std::move(job), std::move(events)};
+}
+
+void JobRegistry::Adopt(std::shared_ptr<Job> job, std::string owner) {
+  std::lock_guard lock(mutex_);
+  jobs_[job->id()] = {job, std::move(owner)};
+  submission_order_.push_back(std::move(job));
+}
+
+absl::StatusOr<std::shared_ptr<JobHandle>> JobRegistry::FindJob(const std::string& id,
+                                                                absl::string_view owner) const {
+  absl::StatusOr<std::shared_ptr<Job>> job = Find(id, owner);
+  if (!job.ok()) return job.status();
+  return std::shared_ptr<JobHandle>(*std::move(job));
+}
+
+std::vector<v1::Job> JobRegistry::DescribeJobs(absl::string_view owner) const {
+  std::vector<v1::Job> described;
+  for (const auto& job : List(owner)) described.push_back(job->Describe());
+  return described;
 }
 
 absl::StatusOr<std::shared_ptr<Job>> JobRegistry::Find(const std::string& id,

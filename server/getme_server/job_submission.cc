@@ -33,34 +33,26 @@ absl::StatusOr<SmoothingParams> CheckJobRequest(const v1::SmoothHeader& header,
   return params;
 }
 
-std::shared_ptr<Job> CreateJob(const v1::SmoothHeader& header, const SmoothingParams& params,
-                               wire::UploadedMesh mesh, std::int64_t upload_bytes,
-                               JobRegistry& registry, const ServerOptions& options,
-                               ServerMetrics* metrics) {
-  return std::make_shared<Job>(registry.NewJobId(), std::move(mesh), upload_bytes, params,
-                               header.result_options(), options.progress_interval, metrics);
-}
-
-absl::StatusOr<std::shared_ptr<Job>> CreateJobFromJson(const std::string& body,
-                                                       JobRegistry& registry,
-                                                       const ServerOptions& options,
-                                                       ServerMetrics* metrics) {
+absl::StatusOr<JobSubmission> SubmissionFromJson(const std::string& body,
+                                                 const ServerOptions& options, bool keep_upload) {
   v1::CreateJobRequest request;
   if (auto s = FromJson(body, request); !s.ok()) return s;
-  v1::SmoothHeader header;
-  *header.mutable_parameters() = request.parameters();
-  *header.mutable_result_options() = request.result_options();
-  absl::StatusOr<SmoothingParams> params = CheckJobRequest(header, options);
+  JobSubmission submission;
+  *submission.header.mutable_parameters() = request.parameters();
+  *submission.header.mutable_result_options() = request.result_options();
+  absl::StatusOr<SmoothingParams> params = CheckJobRequest(submission.header, options);
   if (!params.ok()) return params.status();
+  submission.params = *params;
   const v1::Mesh& wire_mesh = request.mesh();
   if (auto s = CheckNodeCount(wire_mesh.coordinates_size() / 3, options.max_nodes); !s.ok()) {
     return s;
   }
   absl::StatusOr<wire::UploadedMesh> mesh = wire::ToEngineMesh(wire_mesh, options.max_elements);
   if (!mesh.ok()) return mesh.status();
-  const auto upload_bytes = static_cast<std::int64_t>(wire_mesh.ByteSizeLong());
-  request.clear_mesh();  // held once, by the job
-  return CreateJob(header, *params, *std::move(mesh), upload_bytes, registry, options, metrics);
+  submission.mesh = *std::move(mesh);
+  submission.upload_bytes = static_cast<std::int64_t>(wire_mesh.ByteSizeLong());
+  if (keep_upload) submission.received.whole_mesh = wire_mesh.SerializeAsString();
+  return submission;
 }
 
 }  // namespace getme::server

@@ -9,6 +9,7 @@
 
 #include "absl/time/time.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_server/job_handle.h"
 
 namespace getme::server {
 
@@ -20,7 +21,7 @@ namespace getme::server {
 class ProgressFanout {
  public:
   class Watcher;
-  enum class NextResult { kEvent, kTimeout, kEnded };
+  using NextResult = EventSource::NextResult;
 
   explicit ProgressFanout(absl::Duration interval) : interval_(interval) {}
 
@@ -29,10 +30,9 @@ class ProgressFanout {
   // A new watcher; it starts with the latest event published so far (if any).
   std::shared_ptr<Watcher> Watch();
 
-  class Watcher {
+  class Watcher : public EventSource {
    public:
-    // Waits up to `timeout` for the next event. kEnded once the final event was delivered.
-    NextResult Next(absl::Duration timeout, v1::ProgressEvent& event);
+    NextResult Next(absl::Duration timeout, v1::ProgressEvent& event) override;
 
    private:
     friend class ProgressFanout;

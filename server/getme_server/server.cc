@@ -105,10 +105,11 @@ class SmootherServerImpl final : public SmootherServer {
                      std::optional<TlsFiles> tls)
       : authenticator_(std::move(authenticator)),
         tls_(std::move(tls)),
-        registry_(options.max_queued_jobs, options.result_ttl, options.max_queued_bytes),
+        registry_(options.max_queued_jobs, options.result_ttl, options.max_queued_bytes,
+                  options.progress_interval, &metrics_),
         workers_(registry_, options.workers, options.max_job_time),
         max_message_bytes_(static_cast<int>(options.max_message_bytes)),
-        service_(registry_, options, &metrics_, authenticator_) {}
+        service_(registry_, options, authenticator_) {}
 
   ~SmootherServerImpl() override { Shutdown(absl::ZeroDuration()); }
 
@@ -144,7 +145,8 @@ class SmootherServerImpl final : public SmootherServer {
   // After Listen: the gateway serves the registry the gRPC service already works on.
   absl::Status ListenHttp(const ServerOptions& options) {
     if (options.http_listen.empty()) return absl::OkStatus();
-    auto gateway = std::make_unique<HttpGateway>(registry_, options, metrics_, authenticator_);
+    auto gateway =
+        std::make_unique<HttpGateway>(registry_, registry_, options, metrics_, authenticator_);
     absl::Status status = gateway->Start(options.http_listen);
     if (!status.ok()) {
       if (!options.http_listen_optional) return status;

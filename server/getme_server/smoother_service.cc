@@ -37,9 +37,11 @@ absl::Status CheckHeader(const Header& header, std::int64_t max_elements,
 // Reads an upload stream: an optional header first, then mesh chunks, each handed to `upload` as
 // it arrives (wire::MeshUpload builds the engine mesh; no copy of the wire mesh is kept). A
 // missing header means default parameters.
+// `received` (may be null) keeps each chunk as it came, for a shared job store.
 template <typename Request, typename Header, typename Reader>
 absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64_t max_elements,
-                        UploadMeter meter, Header& header, wire::MeshUpload& upload) {
+                        UploadMeter meter, Header& header, wire::MeshUpload& upload,
+                        ReceivedUpload* received = nullptr) {
   Request request;
   std::int64_t message = 0;
   bool have_header = false;
@@ -57,6 +59,7 @@ absl::Status ReadUpload(grpc::ServerContext* context, Reader* reader, std::int64
     } else if (request.has_chunk()) {
       if (auto s = upload.Add(request.chunk()); !s.ok()) return s;
       if (auto s = meter.AddChunk(request.chunk(), upload.assembler().nodes()); !s.ok()) return s;
+      if (received != nullptr) received->chunks.push_back(request.chunk().SerializeAsString());
     } else {
       return absl::InvalidArgumentError(
           absl::StrCat("request message ", message, " carries neither a header nor a chunk"));
@@ -83,18 +86,18 @@ WatchEnd WhyCallEnded(const grpc::ServerContext* context) {
 
 // Forwards progress events until the job's final event, or until the client goes away.
 template <typename WriteEvent>
-WatchEnd ForwardProgress(grpc::ServerContext* context, ProgressFanout::Watcher& watcher,
+WatchEnd ForwardProgress(grpc::ServerContext* context, EventSource& events,
                          const WriteEvent& write) {
   v1::ProgressEvent event;
   while (true) {
-    switch (watcher.Next(kClientPollInterval, event)) {
-      case ProgressFanout::NextResult::kEnded:
+    switch (events.Next(kClientPollInterval, event)) {
+      case EventSource::NextResult::kEnded:
         return WatchEnd::kJobEnded;
-      case ProgressFanout::NextResult::kEvent:
+      case EventSource::NextResult::kEvent:
         if (!write(event)) return WhyCallEnded(context);
         if (event.final()) return WatchEnd::kJobEnded;
         break;
-      case ProgressFanout::NextResult::kTimeout:
+      case EventSource::NextResult::kTimeout:
         if (context->IsCancelled()) return WhyCallEnded(context);
         break;
     }
@@ -104,22 +107,18 @@ WatchEnd ForwardProgress(grpc::ServerContext* context, ProgressFanout::Watcher& 
 // A download cut short gives the result back to the job, so it can be fetched again with
 // GetResult (until --result_ttl passes).
 template <typename Writer>
-grpc::Status StreamResult(Job& job, JobResult result, Writer* writer) {
-  v1::SmoothResponse response;
-  *response.mutable_result() = result.summary;
-  if (!writer->Write(response)) {
-    job.RestoreResult(std::move(result));
-    return grpc::Status(grpc::StatusCode::CANCELLED, "the client went away before the result");
-  }
-  wire::MeshChunker chunker(result.mesh, result.ids, result.options.coordinates_only(),
-                            wire::ResultChunkLimits(result.options.nodes_per_chunk()));
-  bool sent = true;
+grpc::Status StreamResult(ResultStream& result, Writer* writer) {
   v1::SmoothResponse message;
-  while (sent && chunker.Next(*message.mutable_chunk())) sent = writer->Write(message);
-  if (!sent) {
-    job.RestoreResult(std::move(result));
-    return grpc::Status(grpc::StatusCode::CANCELLED,
-                        "the client went away while the result was streamed");
+  bool first = true;
+  while (result.Next(message)) {
+    if (!writer->Write(message)) {
+      result.GiveBack();
+      return grpc::Status(grpc::StatusCode::CANCELLED,
+                          first ? "the client went away before the result"
+                                : "the client went away while the result was streamed");
+    }
+    first = false;
+    message.Clear();
   }
   return grpc::Status::OK;
 }
@@ -137,26 +136,29 @@ absl::StatusOr<std::string> SmootherService::CallerOf(const grpc::ServerContext&
 
 absl::Status SmootherService::RefuseWhileDraining() const {
   // Before the upload: a draining server does not read a mesh it will not queue.
-  if (registry_.accepting()) return absl::OkStatus();
+  if (jobs_.accepting()) return absl::OkStatus();
   return absl::UnavailableError("the server is shutting down and accepts no new jobs");
 }
 
 template <typename Reader>
-absl::StatusOr<std::shared_ptr<Job>> SmootherService::ReadJob(grpc::ServerContext* context,
+absl::StatusOr<JobSubmission> SmootherService::ReadSubmission(grpc::ServerContext* context,
                                                               Reader* reader) {
-  v1::SmoothHeader header;
+  JobSubmission submission;
   wire::MeshUpload upload(options_.max_elements);
-  if (auto s = ReadUpload<v1::SmoothRequest>(context, reader, options_.max_elements,
-                                             UploadMeter(options_, &registry_), header, upload);
+  if (auto s = ReadUpload<v1::SmoothRequest>(
+          context, reader, options_.max_elements, UploadMeter(options_, &jobs_), submission.header,
+          upload, jobs_.keeps_uploads() ? &submission.received : nullptr);
       !s.ok()) {
     return s;
   }
-  absl::StatusOr<SmoothingParams> params = CheckJobRequest(header, options_);
+  absl::StatusOr<SmoothingParams> params = CheckJobRequest(submission.header, options_);
   if (!params.ok()) return params.status();
-  const std::int64_t upload_bytes = upload.assembler().encoded_bytes();
+  submission.params = *params;
+  submission.upload_bytes = upload.assembler().encoded_bytes();
   absl::StatusOr<wire::UploadedMesh> mesh = std::move(upload).Finish();
   if (!mesh.ok()) return mesh.status();
-  return CreateJob(header, *params, *std::move(mesh), upload_bytes, registry_, options_, metrics_);
+  submission.mesh = *std::move(mesh);
+  return submission;
 }
 
 grpc::Status SmootherService::Smooth(
@@ -167,19 +169,21 @@ grpc::Status SmootherService::Smooth(
   if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
-  absl::StatusOr<std::shared_ptr<Job>> job = ReadJob(context, stream);
-  if (!job.ok()) return ToGrpcStatus(job.status());
-  // Watch before queueing, so this caller sees every event from the first one.
-  std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
-  if (auto s = registry_.Submit(*job, *owner); !s.ok()) return ToGrpcStatus(s);
+  absl::StatusOr<JobSubmission> submission = ReadSubmission(context, stream);
+  if (!submission.ok()) return ToGrpcStatus(submission.status());
+  // The directory hands back a reader of every event from the first one.
+  absl::StatusOr<SubmittedJob> submitted = jobs_.Submit(*std::move(submission), *owner);
+  if (!submitted.ok()) return ToGrpcStatus(submitted.status());
+  const std::shared_ptr<JobHandle>* job = &submitted->job;
   spdlog::info("job={} queued by Smooth from {}{}{}", (*job)->id(), context->peer(),
                owner->empty() ? "" : " owner=", *owner);
 
-  const WatchEnd end = ForwardProgress(context, *watcher, [stream](const v1::ProgressEvent& e) {
-    v1::SmoothResponse response;
-    *response.mutable_progress() = e;
-    return stream->Write(response);
-  });
+  const WatchEnd end =
+      ForwardProgress(context, *submitted->events, [stream](const v1::ProgressEvent& e) {
+        v1::SmoothResponse response;
+        *response.mutable_progress() = e;
+        return stream->Write(response);
+      });
   if (end == WatchEnd::kDeadline) {
     (*job)->Cancel("the Smooth call's deadline passed");
     return grpc::Status(grpc::StatusCode::DEADLINE_EXCEEDED,
@@ -190,9 +194,9 @@ grpc::Status SmootherService::Smooth(
     return grpc::Status(grpc::StatusCode::CANCELLED,
                         absl::StrCat("call cancelled; job ", (*job)->id(), " cancelled"));
   }
-  absl::StatusOr<JobResult> result = (*job)->TakeResult();
+  absl::StatusOr<std::unique_ptr<ResultStream>> result = (*job)->TakeResultStream();
   if (!result.ok()) return ToGrpcStatus(result.status());
-  return StreamResult(**job, *std::move(result), stream);
+  return StreamResult(**result, stream);
 }
 
 grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
@@ -203,12 +207,13 @@ grpc::Status SmootherService::SubmitJob(grpc::ServerContext* context,
   if (auto s = RefuseWhileDraining(); !s.ok()) return ToGrpcStatus(s);
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
-  absl::StatusOr<std::shared_ptr<Job>> job = ReadJob(context, reader);
-  if (!job.ok()) return ToGrpcStatus(job.status());
-  if (auto s = registry_.Submit(*job, *owner); !s.ok()) return ToGrpcStatus(s);
-  spdlog::info("job={} queued by SubmitJob from {}{}{}", (*job)->id(), context->peer(),
+  absl::StatusOr<JobSubmission> submission = ReadSubmission(context, reader);
+  if (!submission.ok()) return ToGrpcStatus(submission.status());
+  absl::StatusOr<SubmittedJob> submitted = jobs_.Submit(*std::move(submission), *owner);
+  if (!submitted.ok()) return ToGrpcStatus(submitted.status());
+  spdlog::info("job={} queued by SubmitJob from {}{}{}", submitted->job->id(), context->peer(),
                owner->empty() ? "" : " owner=", *owner);
-  *job_out = (*job)->Describe();
+  *job_out = submitted->job->Describe();
   return grpc::Status::OK;
 }
 
@@ -219,11 +224,11 @@ grpc::Status SmootherService::WatchJob(grpc::ServerContext* context,
   if (!owner.ok()) return ToGrpcStatus(owner.status());
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
+  absl::StatusOr<std::shared_ptr<JobHandle>> job = jobs_.FindJob(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
-  std::shared_ptr<ProgressFanout::Watcher> watcher = (*job)->Watch();
+  std::shared_ptr<EventSource> events = (*job)->WatchEvents();
   // A watcher leaving does not cancel the job: that is what CancelJob is for.
-  switch (ForwardProgress(context, *watcher,
+  switch (ForwardProgress(context, *events,
                           [writer](const v1::ProgressEvent& e) { return writer->Write(e); })) {
     case WatchEnd::kJobEnded:
       return grpc::Status::OK;
@@ -239,7 +244,7 @@ grpc::Status SmootherService::GetJob(grpc::ServerContext* context, const v1::Get
                                      v1::Job* job_out) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
+  absl::StatusOr<std::shared_ptr<JobHandle>> job = jobs_.FindJob(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   *job_out = (*job)->Describe();
   return grpc::Status::OK;
@@ -249,7 +254,7 @@ grpc::Status SmootherService::CancelJob(grpc::ServerContext* context,
                                         const v1::CancelJobRequest* request, v1::Job* job_out) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
+  absl::StatusOr<std::shared_ptr<JobHandle>> job = jobs_.FindJob(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
   (*job)->Cancel(absl::StrCat("CancelJob from ", context->peer()));
   *job_out = (*job)->Describe();
@@ -260,7 +265,7 @@ grpc::Status SmootherService::ListJobs(grpc::ServerContext* context, const v1::L
                                        v1::ListJobsResponse* response) {
   absl::StatusOr<std::string> owner = CallerOf(*context);
   if (!owner.ok()) return ToGrpcStatus(owner.status());
-  for (const auto& job : registry_.List(*owner)) *response->add_jobs() = job->Describe();
+  for (v1::Job& job : jobs_.DescribeJobs(*owner)) *response->add_jobs() = std::move(job);
   return grpc::Status::OK;
 }
 
@@ -271,12 +276,12 @@ grpc::Status SmootherService::GetResult(grpc::ServerContext* context,
   if (!owner.ok()) return ToGrpcStatus(owner.status());
   absl::StatusOr<ClientStreamLimiter::Slot> slot = streams_.Acquire(context->peer());
   if (!slot.ok()) return ToGrpcStatus(slot.status());
-  absl::StatusOr<std::shared_ptr<Job>> job = registry_.Find(request->job_id(), *owner);
+  absl::StatusOr<std::shared_ptr<JobHandle>> job = jobs_.FindJob(request->job_id(), *owner);
   if (!job.ok()) return ToGrpcStatus(job.status());
-  absl::StatusOr<JobResult> result = (*job)->TakeResult();
+  absl::StatusOr<std::unique_ptr<ResultStream>> result = (*job)->TakeResultStream();
   if (!result.ok()) return ToGrpcStatus(result.status());
   spdlog::info("job={} result fetched", (*job)->id());
-  return StreamResult(**job, *std::move(result), writer);
+  return StreamResult(**result, writer);
 }
 
 grpc::Status SmootherService::EvaluateQuality(

@@ -2,7 +2,7 @@
 
 #include "getme/v1/smoother.grpc.pb.h"
 #include "getme_server/authenticator.h"
-#include "getme_server/job_registry.h"
+#include "getme_server/job_directory.h"
 #include "getme_server/server_metrics.h"
 #include "getme_server/server_options.h"
 #include "getme_server/stream_limiter.h"
@@ -10,16 +10,16 @@
 namespace getme::server {
 
 // The getme.v1.Smoother handlers (synchronous API). They translate wire messages to engine
-// types and back, and leave queueing, running and progress fan-out to the registry and jobs.
+// types and back, and leave queueing, running and progress fan-out to the job directory (this
+// process's registry, or the store shared by every replica) and its jobs.
 // Every call first authenticates its caller (metadata `authorization: Bearer <token>` when
 // authentication is on) and sees only that caller's jobs.
 class SmootherService final : public v1::Smoother::Service {
  public:
-  SmootherService(JobRegistry& registry, const ServerOptions& options, ServerMetrics* metrics,
+  SmootherService(JobDirectory& jobs, const ServerOptions& options,
                   const Authenticator& authenticator)
-      : registry_(registry),
+      : jobs_(jobs),
         options_(options),
-        metrics_(metrics),
         authenticator_(authenticator),
         streams_(options.max_streams_per_client) {}
 
@@ -44,14 +44,13 @@ class SmootherService final : public v1::Smoother::Service {
 
  private:
   absl::Status RefuseWhileDraining() const;
-  // Reads a Smooth/SubmitJob upload and makes its job (not yet submitted).
+  // Reads and checks a Smooth/SubmitJob upload (not yet submitted).
   template <typename Reader>
-  absl::StatusOr<std::shared_ptr<Job>> ReadJob(grpc::ServerContext* context, Reader* reader);
+  absl::StatusOr<JobSubmission> ReadSubmission(grpc::ServerContext* context, Reader* reader);
   absl::StatusOr<std::string> CallerOf(const grpc::ServerContext& context) const;
 
-  JobRegistry& registry_;
+  JobDirectory& jobs_;
   const ServerOptions options_;
-  ServerMetrics* const metrics_;
   const Authenticator& authenticator_;
   ClientStreamLimiter streams_;
 };

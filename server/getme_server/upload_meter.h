@@ -5,7 +5,7 @@
 #include "absl/status/status.h"
 #include "getme/v1/mesh.pb.h"
 #include "getme/v1/smoother.pb.h"
-#include "getme_server/job_registry.h"
+#include "getme_server/job_directory.h"
 #include "getme_server/server_options.h"
 
 namespace getme::server {
@@ -22,7 +22,7 @@ absl::Status CheckNodeCount(std::int64_t nodes, std::int64_t max_nodes);
 class UploadMeter {
  public:
   // `jobs` null: the upload does not become a job (EvaluateQuality), no queue budget applies.
-  UploadMeter(const ServerOptions& options, const JobRegistry* jobs)
+  UploadMeter(const ServerOptions& options, const JobDirectory* jobs)
       : options_(options), jobs_(jobs) {}
 
   absl::Status CheckDeclared(const v1::MeshSize& expected) const;
@@ -33,7 +33,7 @@ class UploadMeter {
 
  private:
   const ServerOptions& options_;
-  const JobRegistry* const jobs_;
+  const JobDirectory* const jobs_;
   std::int64_t bytes_ = 0;
 };
 
