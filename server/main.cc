@@ -56,6 +56,13 @@ ABSL_FLAG(absl::Duration, result_ttl, absl::Minutes(30),
 ABSL_FLAG(absl::Duration, progress_interval, absl::Milliseconds(100),
           "at most one intermediate progress event per watcher per this interval (phase ends and "
           "the final event always go out)");
+ABSL_FLAG(std::string, job_store, "",
+          "redis://[[user]:password@]host[:port][/db]: share jobs with every replica pointed at "
+          "the same Redis (queue, progress, results, limits; docs/replicas.md); empty = jobs live "
+          "in this process");
+ABSL_FLAG(absl::Duration, job_lease, absl::Seconds(10),
+          "with --job_store: a job whose replica has not renewed its lease for this long (it died) "
+          "is queued again and restarted by another replica");
 ABSL_FLAG(absl::Duration, shutdown_grace, absl::Seconds(30),
           "on SIGTERM/SIGINT: how long running jobs may finish before they are cancelled");
 
@@ -123,6 +130,8 @@ int main(int argc, char** argv) {
   options.result_ttl = absl::GetFlag(FLAGS_result_ttl);
   options.progress_interval = absl::GetFlag(FLAGS_progress_interval);
   options.shutdown_grace = absl::GetFlag(FLAGS_shutdown_grace);
+  options.job_store = absl::GetFlag(FLAGS_job_store);
+  options.job_lease = absl::GetFlag(FLAGS_job_lease);
   options.auth_tokens_file = absl::GetFlag(FLAGS_auth_tokens_file);
   options.tls_cert = absl::GetFlag(FLAGS_tls_cert);
   options.tls_key = absl::GetFlag(FLAGS_tls_key);

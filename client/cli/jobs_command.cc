@@ -64,6 +64,10 @@ int Watch(remote::SmootherClient& client, const JobsCommandOptions& options) {
           // The job's closing marker repeats the state of the last phase end; it is not an engine
           // event, and local mode has no such line.
           if (wire_event.final() && !wire_event.phase_done()) return;
+          if (wire_event.restarted()) {
+            AnnounceRestart(wire_event, options.json);
+            return;
+          }
           const ProgressEvent event = wire::FromWireProgress(wire_event);
           if (options.json) {
             std::printf("%s\n", events::ProgressEventJson(event).c_str());

@@ -95,6 +95,10 @@ int RunRemoteSmoothCommand(const SmoothCommandOptions& options) {
     // The job's closing marker repeats the state of the last phase end; it is not an engine
     // event, and local mode has no such line.
     if (wire_event.final() && !wire_event.phase_done()) return;
+    if (wire_event.restarted()) {
+      AnnounceRestart(wire_event, options.json);
+      return;
+    }
     sink.OnEvent(wire::FromWireProgress(wire_event));
   };
   absl::StatusOr<remote::RemoteSmoothResult> result;

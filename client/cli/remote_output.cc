@@ -1,5 +1,7 @@
 #include "cli/remote_output.h"
 
+#include <cstdio>
+
 #include "absl/strings/str_format.h"
 #include "events/json_output.h"
 #include "formats/grid_mesh.h"
@@ -66,6 +68,23 @@ const char* JobStateName(v1::JobState state) {
     default:
       return "UNSPECIFIED";
   }
+}
+
+void AnnounceRestart(const v1::ProgressEvent& event, bool json) {
+  if (json) {
+    std::printf("%s\n", events::JsonObject()
+                            .AddString("event", "restarted")
+                            .AddString("job_id", event.job_id())
+                            .AddInt("attempt", event.attempt())
+                            .Build()
+                            .c_str());
+    std::fflush(stdout);
+    return;
+  }
+  std::fprintf(stderr,
+               "[info] job %s restarted from the beginning (attempt %u): the replica running it "
+               "was lost\n",
+               event.job_id().c_str(), event.attempt());
 }
 
 std::string JobJson(const v1::Job& job) {

@@ -34,5 +34,9 @@ const char* JobStateName(v1::JobState state);
 // {"event":"job","job_id":…,"state":"RUNNING",…} and its one-line text form.
 std::string JobJson(const v1::Job& job);
 std::string FormatJobLine(const v1::Job& job);
+// A `restarted` event (replicas sharing a job store: the replica running the job was lost and
+// another starts it again): {"event":"restarted","job_id":…,"attempt":N} on stdout with --json,
+// else a line on stderr. The progress that follows is the new attempt's, from its first phase.
+void AnnounceRestart(const v1::ProgressEvent& event, bool json);
 
 }  // namespace getme::cli

@@ -273,7 +273,7 @@ void HttpGateway::AddRoutes() {
   });
   http_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
     JobsNow now{local_jobs_.ListAllOwners(), jobs_.QueuedCount(), options_.workers,
-                jobs_.accepting(), ReadProcessMemory()};
+                jobs_.LiveReplicas(),        jobs_.accepting(),   ReadProcessMemory()};
     res.set_content(PrometheusText(metrics_.Read(), now), "text/plain; version=0.0.4");
   });
 

@@ -46,11 +46,21 @@ void Job::Publish(v1::ProgressEvent event) {
   std::lock_guard lock(mutex_);
   event.set_job_id(id_);
   event.set_sequence(++sequence_);
+  if (attempt_ > 0) event.set_attempt(attempt_);
   const std::uint64_t element_iterations = trace_.Record(event);
   if (metrics_ != nullptr && element_iterations > 0) {
     metrics_->AddElementIterations(element_iterations);
   }
   fanout_.Publish(event);
+  if (event_sink_ != nullptr) event_sink_(event);
+}
+
+void Job::ContinueStoredJob(std::uint64_t last_sequence, std::uint32_t attempt,
+                            std::function<void(const v1::ProgressEvent&)> sink) {
+  std::lock_guard lock(mutex_);
+  sequence_ = last_sequence;
+  attempt_ = attempt;
+  event_sink_ = std::move(sink);
 }
 
 void Job::Run(absl::Time start) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -46,6 +47,11 @@ class Job : public JobHandle {
   // Running: the engine stops within one iteration and the job FAILS with DEADLINE_EXCEEDED
   // naming the limit. Otherwise a no-op.
   void StopForTimeLimit(absl::Duration limit);
+  // For a job a shared store handed to this replica (store_worker.h), before Run: its events
+  // continue the stored sequence after `last_sequence`, carry `attempt`, and go to `sink` as well
+  // (called with the job's mutex held, in order: it must not block).
+  void ContinueStoredJob(std::uint64_t last_sequence, std::uint32_t attempt,
+                         std::function<void(const v1::ProgressEvent&)> sink);
 
   v1::JobState state() const;
   bool final() const override;
@@ -100,6 +106,8 @@ class Job : public JobHandle {
   std::string cancel_reason_;
   std::optional<absl::Duration> time_limit_hit_;  // set by StopForTimeLimit
   std::uint64_t sequence_ = 0;
+  std::uint32_t attempt_ = 0;                                 // 0: not from a shared store
+  std::function<void(const v1::ProgressEvent&)> event_sink_;  // shared store only
   std::optional<v1::SmoothResult> summary_;
   JobTrace trace_;
   bool result_taken_ = false;

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,8 @@ class JobDirectory {
   virtual absl::StatusOr<std::shared_ptr<JobHandle>> FindJob(const std::string& id,
                                                              absl::string_view owner) const = 0;
   virtual std::vector<v1::Job> DescribeJobs(absl::string_view owner) const = 0;  // newest first
+  // Replicas sharing the directory that are alive now; nullopt for a single process.
+  virtual std::optional<std::int64_t> LiveReplicas() const { return std::nullopt; }
 };
 
 }  // namespace getme::server

@@ -62,8 +62,14 @@ std::string PrometheusText(const ServerMetrics::Snapshot& counters, const JobsNo
     absl::StrAppend(&out, "getme_jobs_finished_total{state=\"", StateLabel(state), "\"} ",
                     it == counters.finished_jobs.end() ? 0 : it->second, "\n");
   }
-  Header(out, "getme_queue_length", "gauge", "Jobs waiting for a worker.");
+  Header(out, "getme_queue_length", "gauge",
+         "Jobs waiting for a worker (with --job_store: in the whole shared queue).");
   absl::StrAppend(&out, "getme_queue_length ", now.queued, "\n");
+  if (now.live_replicas.has_value()) {
+    Header(out, "getme_live_replicas", "gauge",
+           "Replicas sharing the job store (--job_store) heard from in the last 5 seconds.");
+    absl::StrAppend(&out, "getme_live_replicas ", *now.live_replicas, "\n");
+  }
   Header(out, "getme_workers", "gauge", "Jobs that may run at the same time (--workers).");
   absl::StrAppend(&out, "getme_workers ", now.workers, "\n");
   Header(out, "getme_active_workers", "gauge", "Workers running a job now.");

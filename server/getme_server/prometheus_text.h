@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,10 @@ namespace getme::server {
 // scrape time.
 struct JobsNow {
   std::vector<std::shared_ptr<Job>> jobs;
-  std::int64_t queued = 0;
+  std::int64_t queued = 0;  // with a shared job store: the cluster's queue
   int workers = 0;
+  // With a shared job store: replicas heard from in the last seconds (for an autoscaler).
+  std::optional<std::int64_t> live_replicas;
   bool ready = true;
   ProcessMemory memory;
 };

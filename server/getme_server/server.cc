@@ -1,5 +1,7 @@
 #include "getme_server/server.h"
 
+#include <unistd.h>
+
 #include <condition_variable>
 #include <limits>
 #include <mutex>
@@ -12,7 +14,9 @@
 #include "getme_server/job_registry.h"
 #include "getme_server/rpc_metrics_interceptor.h"
 #include "getme_server/server_metrics.h"
+#include "getme_server/shared_job_store.h"
 #include "getme_server/smoother_service.h"
+#include "getme_server/store_workers.h"
 #include "getme_server/tls_files.h"
 #include "getme_server/worker_pool.h"
 #include "grpcpp/ext/proto_server_reflection_plugin.h"
@@ -20,6 +24,8 @@
 #include "grpcpp/security/server_credentials.h"
 #include "grpcpp/server.h"
 #include "grpcpp/server_builder.h"
+#include "redis/redis_address.h"
+#include "redis/redis_client.h"
 #include "spdlog/spdlog.h"
 
 namespace getme::server {
@@ -75,6 +81,10 @@ absl::Status CheckOptions(const ServerOptions& options) {
     return absl::InvalidArgumentError(absl::StrCat(
         "--max_job_time = ", absl::FormatDuration(options.max_job_time), " must be positive"));
   }
+  if (options.job_lease < absl::Milliseconds(100)) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "--job_lease = ", absl::FormatDuration(options.job_lease), " must be at least 100ms"));
+  }
   if (options.result_ttl <= absl::ZeroDuration()) {
     return absl::InvalidArgumentError(absl::StrCat(
         "--result_ttl = ", absl::FormatDuration(options.result_ttl), " must be positive"));
@@ -101,15 +111,22 @@ std::shared_ptr<grpc::ServerCredentials> GrpcCredentials(const std::optional<Tls
 
 class SmootherServerImpl final : public SmootherServer {
  public:
+  // `store` null: jobs live in this process (the registry); else in the shared store.
   SmootherServerImpl(const ServerOptions& options, Authenticator authenticator,
-                     std::optional<TlsFiles> tls)
+                     std::optional<TlsFiles> tls, std::unique_ptr<SharedJobStore> store)
       : authenticator_(std::move(authenticator)),
         tls_(std::move(tls)),
         registry_(options.max_queued_jobs, options.result_ttl, options.max_queued_bytes,
                   options.progress_interval, &metrics_),
-        workers_(registry_, options.workers, options.max_job_time),
+        store_(std::move(store)),
         max_message_bytes_(static_cast<int>(options.max_message_bytes)),
-        service_(registry_, options, authenticator_) {}
+        service_(jobs(), options, authenticator_) {
+    if (store_ != nullptr) {
+      store_workers_ = std::make_unique<StoreWorkers>(*store_, registry_, options, &metrics_);
+    } else {
+      workers_ = std::make_unique<WorkerPool>(registry_, options.workers, options.max_job_time);
+    }
+  }
 
   ~SmootherServerImpl() override { Shutdown(absl::ZeroDuration()); }
 
@@ -146,7 +163,7 @@ class SmootherServerImpl final : public SmootherServer {
   absl::Status ListenHttp(const ServerOptions& options) {
     if (options.http_listen.empty()) return absl::OkStatus();
     auto gateway =
-        std::make_unique<HttpGateway>(registry_, registry_, options, metrics_, authenticator_);
+        std::make_unique<HttpGateway>(jobs(), registry_, options, metrics_, authenticator_);
     absl::Status status = gateway->Start(options.http_listen);
     if (!status.ok()) {
       if (!options.http_listen_optional) return status;
@@ -158,6 +175,9 @@ class SmootherServerImpl final : public SmootherServer {
     return absl::OkStatus();
   }
 
+  JobDirectory& jobs() {
+    return store_ != nullptr ? static_cast<JobDirectory&>(*store_) : registry_;
+  }
   int port() const override { return port_; }
   int http_port() const override { return http_ == nullptr ? 0 : http_->port(); }
   bool tls() const { return tls_.has_value(); }
@@ -188,16 +208,29 @@ class SmootherServerImpl final : public SmootherServer {
     if (server_ != nullptr)
       server_->GetHealthCheckService()->SetServingStatus(false);  // all services
     registry_.StopAccepting("the server is shutting down");
+    if (store_ != nullptr) {
+      // Jobs queued in the shared store stay there for the other replicas.
+      store_->StopAccepting();
+      store_workers_->StopTaking();
+    }
     const absl::Time jobs_deadline = absl::Now() + grace;
     // gRPC keeps taking calls while jobs run out their grace: new jobs are refused with
     // UNAVAILABLE by the handlers (a call arriving during gRPC's own shutdown would be
     // CANCELLED instead), and clients can still watch and fetch their jobs.
-    if (!registry_.WaitUntilNoneRunning(jobs_deadline)) {
-      spdlog::warn("grace period over: cancelling the jobs still running");
+    const bool finished = registry_.WaitUntilNoneRunning(jobs_deadline);
+    if (store_ != nullptr) {
+      if (!finished) {
+        spdlog::warn("grace period over: handing the jobs still running back to the job store");
+        store_workers_->ReleaseRunning(
+            "the replica running it shut down; another replica starts it again");
+      }
+      store_workers_->Join();
+    } else {
+      if (!finished) spdlog::warn("grace period over: cancelling the jobs still running");
+      registry_.CancelAll("the server is shutting down");
     }
-    registry_.CancelAll("the server is shutting down");
     registry_.StopWorkers();
-    workers_.Join();
+    if (workers_ != nullptr) workers_->Join();
     // Handlers still streaming (progress of ended jobs, results) get kHandlerDrain to finish.
     if (server_ != nullptr) {
       server_->Shutdown(absl::ToChronoTime(absl::Now() + kHandlerDrain));
@@ -211,8 +244,10 @@ class SmootherServerImpl final : public SmootherServer {
   const Authenticator authenticator_;  // before the front ends, which keep a reference
   const std::optional<TlsFiles> tls_;
   ServerMetrics metrics_;  // before the registry: jobs count into it until they are destroyed
-  JobRegistry registry_;
-  WorkerPool workers_;
+  JobRegistry registry_;   // with a shared store: the jobs running here
+  std::unique_ptr<SharedJobStore> store_;        // null without --job_store
+  std::unique_ptr<WorkerPool> workers_;          // without a shared store
+  std::unique_ptr<StoreWorkers> store_workers_;  // with one
   const int max_message_bytes_;
   SmootherService service_;
   std::unique_ptr<grpc::Server> server_;
@@ -239,8 +274,28 @@ absl::StatusOr<std::unique_ptr<SmootherServer>> SmootherServer::Start(
     spdlog::info("authentication on: {} bearer token(s) from --auth_tokens_file", tokens->size());
     authenticator = Authenticator(*std::move(tokens));
   }
-  auto server =
-      std::make_unique<SmootherServerImpl>(options, std::move(authenticator), *std::move(tls));
+  std::unique_ptr<SharedJobStore> store;
+  if (!options.job_store.empty()) {
+    absl::StatusOr<redis::RedisAddress> address = redis::ParseRedisUrl(options.job_store);
+    if (!address.ok()) {
+      return absl::Status(address.status().code(),
+                          absl::StrCat("--job_store: ", address.status().message()));
+    }
+    absl::StatusOr<std::unique_ptr<redis::RedisClient>> redis =
+        redis::RedisClient::Connect(*address);
+    if (!redis.ok()) {
+      return absl::Status(redis.status().code(),
+                          absl::StrCat("--job_store: ", redis.status().message()));
+    }
+    char host[256] = {};
+    gethostname(host, sizeof(host) - 1);
+    const std::string replica = absl::StrCat(host, ":", getpid());
+    spdlog::info("shared job store at {} (replica {}, lease {})", redis::RedactedUrl(*address),
+                 replica, absl::FormatDuration(options.job_lease));
+    store = std::make_unique<SharedJobStore>(*std::move(redis), options, replica);
+  }
+  auto server = std::make_unique<SmootherServerImpl>(options, std::move(authenticator),
+                                                     *std::move(tls), std::move(store));
   if (auto s = server->Listen(options.listen); !s.ok()) return s;
   if (auto s = server->ListenHttp(options); !s.ok()) return s;
   if (!options.auth_tokens_file.empty() && !server->tls()) {

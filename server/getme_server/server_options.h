@@ -48,6 +48,13 @@ struct ServerOptions {
   // Open Smooth/SubmitJob/WatchJob/GetResult/EvaluateQuality calls per client host; one more:
   // RESOURCE_EXHAUSTED.
   int max_streams_per_client = 32;
+
+  // Replicas (docs/replicas.md): a redis://[[user]:password@]host[:port][/db] URL makes every
+  // replica pointed at it share jobs, queue, progress and results; empty = this process's own
+  // registry. A job running on a replica that stops renewing its lease for job_lease is restarted
+  // by another.
+  std::string job_store;
+  absl::Duration job_lease = absl::Seconds(10);
 };
 
 }  // namespace getme::server

@@ -1,0 +1,349 @@
+// Several real getme-server processes sharing one real redis-server (--job_store, issue 18): any
+// replica answers for any job, a killed replica loses nothing, and the cluster's queue limit holds.
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <memory>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
+#include "gtest/gtest.h"
+#include "redis/redis_address.h"
+#include "redis/redis_client.h"
+#include "redis_server_process.h"
+#include "remote/smoother_client.h"
+#include "server_process.h"
+#include "server_test_support.h"
+
+namespace getme::server::testing {
+namespace {
+
+using redis::testing::RedisServerProcess;
+
+// Short enough that a killed replica's job restarts within the test's patience.
+constexpr char kLease[] = "--job_lease=1s";
+
+struct Replica {
+  ServerProcess process;
+  std::string address;
+  std::unique_ptr<remote::SmootherClient> client;
+};
+
+class ReplicasTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!RedisServerProcess::Available()) GTEST_SKIP() << "no /usr/bin/redis-server";
+    absl::StatusOr<std::unique_ptr<RedisServerProcess>> redis = RedisServerProcess::Start();
+    ASSERT_TRUE(redis.ok()) << redis.status();
+    redis_ = *std::move(redis);
+    absl::StatusOr<redis::RedisAddress> address = redis::ParseRedisUrl(redis_->url());
+    ASSERT_TRUE(address.ok()) << address.status();
+    absl::StatusOr<std::unique_ptr<redis::RedisClient>> store =
+        redis::RedisClient::Connect(*address);
+    ASSERT_TRUE(store.ok()) << store.status();
+    store_ = *std::move(store);
+  }
+
+  void TearDown() override {
+    for (Replica& replica : replicas_) {
+      if (replica.process.pid > 0 && kill(replica.process.pid, 0) == 0) {
+        kill(replica.process.pid, SIGKILL);
+        WaitForExit(replica.process.pid, absl::Seconds(10));
+      }
+    }
+  }
+
+  void StartReplicas(int count, const std::vector<std::string>& extra_flags = {}) {
+    for (int i = 0; i < count; ++i) {
+      // A name no other test of this process used: a stale log would name a dead server's port.
+      static std::atomic<int> started{0};
+      const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-", getpid(), "-",
+                                           started.fetch_add(1), ".log");
+      std::vector<std::string> flags = {absl::StrCat("--job_store=", redis_->url()), kLease,
+                                        "--progress_interval=0"};
+      flags.insert(flags.end(), extra_flags.begin(), extra_flags.end());
+      Replica replica;
+      replica.process = SpawnServer(log, flags);
+      ASSERT_GT(replica.process.pid, 0);
+      const int port = WaitForPort(log);
+      ASSERT_GT(port, 0) << ReadFile(log);
+      replica.address = absl::StrCat("127.0.0.1:", port);
+      replica.client = std::make_unique<remote::SmootherClient>(
+          remote::SmootherClient::CreateChannel(replica.address));
+      replicas_.push_back(std::move(replica));
+    }
+  }
+
+  // The replica whose log says it took `job_id` (attempt `attempt`); -1 if none within 30 s.
+  int RunnerOf(const std::string& job_id, int attempt) const {
+    const std::string line = absl::StrCat("job=", job_id, " phase=taken attempt=", attempt, " ");
+    const absl::Time deadline = absl::Now() + absl::Seconds(30);
+    while (absl::Now() < deadline) {
+      for (std::size_t i = 0; i < replicas_.size(); ++i) {
+        if (ReadFile(replicas_[i].process.log_path).find(line) != std::string::npos) {
+          return static_cast<int>(i);
+        }
+      }
+      absl::SleepFor(absl::Milliseconds(20));
+    }
+    return -1;
+  }
+
+  std::int64_t StoreInteger(std::initializer_list<std::string_view> command) const {
+    absl::StatusOr<redis::RedisReply> reply = store_->Command(command);
+    EXPECT_TRUE(reply.ok()) << reply.status();
+    if (!reply.ok()) return -1;
+    if (reply->type() == redis::RedisReply::Type::kInteger) return reply->integer();
+    std::int64_t value = 0;
+    if (!reply->is_nil()) {
+      EXPECT_TRUE(absl::SimpleAtoi(reply->str(), &value)) << reply->str();
+    }
+    return value;
+  }
+
+  // No job holds a lease, waits in the queue, or counts against the byte limit.
+  void ExpectStoreIdle() const {
+    EXPECT_EQ(StoreInteger({"ZCARD", "getme:running"}), 0);
+    EXPECT_EQ(StoreInteger({"LLEN", "getme:queue"}), 0);
+    EXPECT_EQ(StoreInteger({"GET", "getme:held_bytes"}), 0);
+  }
+
+  std::unique_ptr<RedisServerProcess> redis_;
+  std::unique_ptr<redis::RedisClient> store_;
+  std::vector<Replica> replicas_;
+};
+
+// The same job through one in-process server without a store: the reference bits.
+v1::Mesh SingleProcessResult(const v1::Mesh& mesh, const remote::SmoothJobOptions& job) {
+  TestServer server = StartTestServer();
+  remote::SmootherClient client(server.channel);
+  absl::StatusOr<remote::RemoteSmoothResult> result = client.Smooth(mesh, job, {});
+  EXPECT_TRUE(result.ok()) << result.status();
+  return result.ok() ? result->mesh : v1::Mesh();
+}
+
+void ExpectSameCoordinates(const v1::Mesh& expected, const v1::Mesh& actual) {
+  ASSERT_EQ(expected.coordinates_size(), actual.coordinates_size());
+  for (int i = 0; i < expected.coordinates_size(); ++i) {
+    ASSERT_EQ(expected.coordinates(i), actual.coordinates(i)) << "coordinate " << i;
+  }
+}
+
+TEST_F(ReplicasTest, SubmitOnAWatchOnBFromTheFirstEventFetchOnCGivesTheSingleProcessBits) {
+  StartReplicas(3);
+  const v1::Mesh mesh = ToWire(TetBlock(8, 0.3));
+  const remote::SmoothJobOptions job;  // the default run, every phase
+  absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, job);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+
+  std::vector<v1::ProgressEvent> events;
+  ASSERT_TRUE(replicas_[1]
+                  .client
+                  ->WatchJob(submitted->job_id(),
+                             [&](const v1::ProgressEvent& event) { events.push_back(event); })
+                  .ok());
+  ASSERT_FALSE(events.empty());
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    EXPECT_EQ(events[i].job_id(), submitted->job_id());
+    EXPECT_EQ(events[i].attempt(), 1u);
+    if (i > 0) {
+      EXPECT_GT(events[i].sequence(), events[i - 1].sequence()) << "event " << i;
+    }
+  }
+  EXPECT_TRUE(events.back().final());
+  // A watcher on another replica, after the end, gets the same events from the first one, with
+  // the same numbers.
+  std::vector<v1::ProgressEvent> replayed;
+  ASSERT_TRUE(replicas_[2]
+                  .client
+                  ->WatchJob(submitted->job_id(),
+                             [&](const v1::ProgressEvent& event) { replayed.push_back(event); })
+                  .ok());
+  ASSERT_EQ(replayed.size(), events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    EXPECT_EQ(replayed[i].SerializeAsString(), events[i].SerializeAsString()) << "event " << i;
+  }
+  // Intermediate events are thinned to one per flush; every phase's end is there.
+  const auto phase_ends = std::count_if(events.begin(), events.end(),
+                                        [](const auto& e) { return e.phase_done() && !e.final(); });
+
+  absl::StatusOr<v1::Job> described = replicas_[2].client->GetJob(submitted->job_id());
+  ASSERT_TRUE(described.ok()) << described.status();
+  EXPECT_EQ(described->state(), v1::JOB_STATE_SUCCEEDED);
+  EXPECT_TRUE(described->result_available());
+  absl::StatusOr<remote::RemoteSmoothResult> result =
+      replicas_[2].client->GetResult(submitted->job_id());
+  ASSERT_TRUE(result.ok()) << result.status();
+  EXPECT_EQ(result->result.job_id(), submitted->job_id());
+  EXPECT_EQ(phase_ends, result->result.phases_size());
+  ExpectSameCoordinates(SingleProcessResult(mesh, job), result->mesh);
+
+  // Handed out once, whichever replica is asked next.
+  absl::StatusOr<remote::RemoteSmoothResult> again =
+      replicas_[0].client->GetResult(submitted->job_id());
+  EXPECT_EQ(again.status().code(), absl::StatusCode::kNotFound) << again.status();
+  // Every replica lists it.
+  for (Replica& replica : replicas_) {
+    absl::StatusOr<std::vector<v1::Job>> listed = replica.client->ListJobs();
+    ASSERT_TRUE(listed.ok()) << listed.status();
+    ASSERT_EQ(listed->size(), 1u);
+    EXPECT_EQ(listed->front().job_id(), submitted->job_id());
+  }
+  ExpectStoreIdle();
+}
+
+TEST_F(ReplicasTest, CancelFromBStopsAJobRunningOnAnotherReplicaAndAQueuedOneAtOnce) {
+  StartReplicas(3, {"--workers=1"});
+  const v1::Mesh mesh = ToWire(TetBlock(6, 0.3));
+  remote::SmoothJobOptions forever;
+  forever.parameters = LongRunningParameters();
+  // Three replicas with one worker each: three jobs run, the fourth waits in the queue.
+  std::vector<std::string> ids;
+  for (int i = 0; i < 4; ++i) {
+    absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, forever);
+    ASSERT_TRUE(submitted.ok()) << submitted.status();
+    ids.push_back(submitted->job_id());
+    if (i < 3) {
+      ASSERT_GE(RunnerOf(ids.back(), 1), 0) << "job " << i << " never ran";
+    }
+  }
+  absl::StatusOr<v1::Job> queued = replicas_[1].client->GetJob(ids[3]);
+  ASSERT_TRUE(queued.ok()) << queued.status();
+  EXPECT_EQ(queued->state(), v1::JOB_STATE_QUEUED);
+
+  absl::StatusOr<v1::Job> cancelled = replicas_[1].client->CancelJob(ids[3]);
+  ASSERT_TRUE(cancelled.ok()) << cancelled.status();
+  EXPECT_EQ(cancelled->state(), v1::JOB_STATE_CANCELLED);
+  EXPECT_NE(cancelled->error_message().find("cancelled: CancelJob from"), std::string::npos)
+      << cancelled->error_message();
+
+  for (int i = 0; i < 3; ++i) {
+    const int runner = RunnerOf(ids[i], 1);
+    // Cancelled from a replica that does not run it.
+    Replica& other = replicas_[(runner + 1) % 3];
+    ASSERT_TRUE(other.client->CancelJob(ids[i]).ok());
+    ASSERT_TRUE(other.client->WatchJob(ids[i], {}).ok());
+    absl::StatusOr<v1::Job> ended = replicas_[(runner + 2) % 3].client->GetJob(ids[i]);
+    ASSERT_TRUE(ended.ok()) << ended.status();
+    EXPECT_EQ(ended->state(), v1::JOB_STATE_CANCELLED) << ended->DebugString();
+    EXPECT_EQ(ended->error_code(), static_cast<int>(absl::StatusCode::kCancelled));
+    EXPECT_NE(ended->error_message().find("cancelled: CancelJob from"), std::string::npos)
+        << ended->error_message();
+    absl::StatusOr<remote::RemoteSmoothResult> result = other.client->GetResult(ids[i]);
+    EXPECT_EQ(result.status().code(), absl::StatusCode::kCancelled) << result.status();
+  }
+  ExpectStoreIdle();
+}
+
+TEST_F(ReplicasTest, AKilledReplicasJobIsRestartedElsewhereWithTheSameBitsAndTheWatcherSeesIt) {
+  StartReplicas(3, {"--workers=1"});
+  const v1::Mesh mesh = ToWire(TetBlock(16, 0.3));
+  const remote::SmoothJobOptions job;
+  absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, job);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  const int runner = RunnerOf(submitted->job_id(), 1);
+  ASSERT_GE(runner, 0);
+  Replica& watcher = replicas_[(runner + 1) % 3];
+  Replica& fetcher = replicas_[(runner + 2) % 3];
+
+  std::vector<v1::ProgressEvent> events;
+  std::atomic<bool> killed{false};
+  absl::Status watched =
+      watcher.client->WatchJob(submitted->job_id(), [&](const v1::ProgressEvent& event) {
+        events.push_back(event);
+        // Killed while it runs: after its first event.
+        if (!killed.exchange(true)) {
+          ASSERT_EQ(kill(replicas_[runner].process.pid, SIGKILL), 0);
+        }
+      });
+  ASSERT_TRUE(watched.ok()) << watched;
+  EXPECT_EQ(WaitForExit(replicas_[runner].process.pid, absl::Seconds(10)), 128 + SIGKILL);
+
+  // The watcher saw the restart as an event, then the second attempt to its end.
+  const auto restart = std::find_if(events.begin(), events.end(),
+                                    [](const v1::ProgressEvent& e) { return e.restarted(); });
+  ASSERT_NE(restart, events.end());
+  EXPECT_EQ(restart->attempt(), 2u);
+  EXPECT_EQ(events.back().attempt(), 2u);
+  EXPECT_TRUE(events.back().final());
+  for (std::size_t i = 1; i < events.size(); ++i) {
+    EXPECT_GT(events[i].sequence(), events[i - 1].sequence()) << "event " << i;
+  }
+  EXPECT_GE(RunnerOf(submitted->job_id(), 2), 0);
+  EXPECT_NE(RunnerOf(submitted->job_id(), 2), runner);
+
+  absl::StatusOr<remote::RemoteSmoothResult> result =
+      fetcher.client->GetResult(submitted->job_id());
+  ASSERT_TRUE(result.ok()) << result.status();
+  ExpectSameCoordinates(SingleProcessResult(mesh, job), result->mesh);
+  ExpectStoreIdle();
+}
+
+TEST_F(ReplicasTest, SixteenClientsAgainstAClusterQueueLimitLoseAndDuplicateNothing) {
+  StartReplicas(3, {"--workers=1", "--max_queued_jobs=2"});
+  const v1::Mesh mesh = ToWire(TetBlock(8, 0.3));
+  constexpr int kClients = 16;
+  std::vector<std::string> accepted(kClients);
+  std::vector<absl::StatusCode> codes(kClients, absl::StatusCode::kUnknown);
+  std::vector<std::thread> clients;
+  for (int i = 0; i < kClients; ++i) {
+    clients.emplace_back([&, i] {
+      remote::CallOptions once;
+      once.retry.max_attempts = 1;
+      absl::StatusOr<v1::Job> submitted = replicas_[i % 3].client->SubmitJob(mesh, {}, once);
+      codes[i] = submitted.status().code();
+      if (submitted.ok()) accepted[i] = submitted->job_id();
+    });
+  }
+  for (std::thread& client : clients) client.join();
+
+  std::set<std::string> ids;
+  int refused = 0;
+  for (int i = 0; i < kClients; ++i) {
+    if (codes[i] == absl::StatusCode::kOk) {
+      EXPECT_TRUE(ids.insert(accepted[i]).second) << "duplicate id " << accepted[i];
+    } else {
+      EXPECT_EQ(codes[i], absl::StatusCode::kResourceExhausted) << "client " << i;
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 0) << "the limit of 2 queued jobs never bit";
+  EXPECT_GE(ids.size(), 3u);
+  // Every accepted job ends SUCCEEDED with its result, fetched from another replica.
+  for (const std::string& id : ids) {
+    ASSERT_TRUE(replicas_[1].client->WatchJob(id, {}).ok());
+    absl::StatusOr<remote::RemoteSmoothResult> result = replicas_[2].client->GetResult(id);
+    ASSERT_TRUE(result.ok()) << id << ": " << result.status();
+    EXPECT_EQ(result->mesh.coordinates_size(), mesh.coordinates_size());
+  }
+  absl::StatusOr<std::vector<v1::Job>> listed = replicas_[0].client->ListJobs();
+  ASSERT_TRUE(listed.ok()) << listed.status();
+  std::set<std::string> listed_ids;
+  for (const v1::Job& job : *listed) {
+    EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED) << job.job_id();
+    listed_ids.insert(job.job_id());
+  }
+  EXPECT_EQ(listed_ids, ids);
+  ExpectStoreIdle();
+}
+
+TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
+  const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-nostore-", getpid());
+  // A port nothing listens on: the one the test's redis has, once it is gone.
+  const std::string url = redis_->url();
+  redis_.reset();
+  ServerProcess server = SpawnServer(log, {absl::StrCat("--job_store=", url)});
+  EXPECT_EQ(WaitForExit(server.pid, absl::Seconds(20)), 1);
+  EXPECT_NE(ReadFile(log).find("--job_store: redis: cannot connect to " + url), std::string::npos)
+      << ReadFile(log);
+}
+
+}  // namespace
+}  // namespace getme::server::testing
