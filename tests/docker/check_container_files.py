@@ -190,7 +190,9 @@ def main(argv):
             with open(os.path.join(k8s, name), encoding="utf-8") as f:
                 documents.extend(d for d in yaml.safe_load_all(f) if d)
     deployments = [d for d in documents if d["kind"] == "Deployment"]
-    services = [d for d in documents if d["kind"] == "Service"]
+    # The replicas' job store (redis.yaml) is checked on its own below.
+    services = [d for d in documents if d["kind"] == "Service" and
+                d["spec"]["selector"].get("app") == "getme"]
     check(len(deployments) == 1 and services, "k8s: a Deployment and Services")
     pod = deployments[0]["spec"]["template"]["spec"]
     container = pod["containers"][0]
@@ -212,6 +214,34 @@ def main(argv):
                   f"targets container port '{port['targetPort']}'")
     check(any(s["spec"].get("clusterIP") == "None" for s in services),
           "k8s: a headless Service for client-side gRPC balancing")
+
+    # Replicas share jobs through Redis (docs/replicas.md): the Deployment points every replica
+    # at the StatefulSet's Service, with the password from the Secret both use.
+    stores = [d for d in documents if d["kind"] == "StatefulSet"]
+    check(len(stores) == 1, "k8s: a Redis StatefulSet")
+    redis_container = stores[0]["spec"]["template"]["spec"]["containers"][0]
+    redis_ports = {p["name"]: p["containerPort"] for p in redis_container["ports"]}
+    redis_services = [d for d in documents if d["kind"] == "Service" and
+                      d["spec"]["selector"].get("app") == stores[0]["metadata"]["labels"]["app"]]
+    check(len(redis_services) == 1 and
+          all(p["targetPort"] in redis_ports for p in redis_services[0]["spec"]["ports"]),
+          "k8s: a Service for the Redis StatefulSet")
+    store_host = f"{redis_services[0]['metadata']['name']}:{redis_ports['redis']}"
+    check(any(a.startswith("--job_store=redis://") and a.endswith(f"@{store_host}")
+              for a in container["args"]), f"k8s replicas use --job_store at {store_host}")
+    secrets = {d["metadata"]["name"] for d in documents if d["kind"] == "Secret"}
+    for env in container.get("env", []) + redis_container.get("env", []):
+        ref = env.get("valueFrom", {}).get("secretKeyRef", {})
+        check(ref.get("name") in secrets, f"k8s env {env['name']} comes from a Secret here")
+
+    with open(os.path.join(repo, "docker", "compose.replicas.yaml"), encoding="utf-8") as f:
+        replicas = yaml.safe_load(f)["services"]
+    getmes = [s for name, s in replicas.items() if name.startswith("getme-")]
+    check("redis" in replicas and len(getmes) >= 2, "compose.replicas: Redis and two or more replicas")
+    check(all("--job_store=redis://redis:6379" in s["command"] for s in getmes),
+          "compose.replicas: every replica uses the Redis service as its job store")
+    host_ports = [p.split(":")[0] for s in getmes for p in s["ports"]]
+    check(len(host_ports) == len(set(host_ports)), "compose.replicas: no host port published twice")
 
     print(f"docker_files: {len(passes)} passed, {len(failures)} failed")
     return 1 if failures else 0

@@ -14,6 +14,7 @@
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
+#include "auth_test_support.h"
 #include "gtest/gtest.h"
 #include "redis/redis_address.h"
 #include "redis/redis_client.h"
@@ -32,6 +33,7 @@ constexpr char kLease[] = "--job_lease=1s";
 
 struct Replica {
   ServerProcess process;
+  int port = 0;
   std::string address;
   std::unique_ptr<remote::SmootherClient> client;
 };
@@ -74,6 +76,7 @@ class ReplicasTest : public ::testing::Test {
       ASSERT_GT(replica.process.pid, 0);
       const int port = WaitForPort(log);
       ASSERT_GT(port, 0) << ReadFile(log);
+      replica.port = port;
       replica.address = absl::StrCat("127.0.0.1:", port);
       replica.client = std::make_unique<remote::SmootherClient>(
           remote::SmootherClient::CreateChannel(replica.address));
@@ -331,6 +334,67 @@ TEST_F(ReplicasTest, SixteenClientsAgainstAClusterQueueLimitLoseAndDuplicateNoth
     listed_ids.insert(job.job_id());
   }
   EXPECT_EQ(listed_ids, ids);
+  ExpectStoreIdle();
+}
+
+TEST_F(ReplicasTest, AJobIsVisibleOnlyToItsOwnerOnEveryReplica) {
+  StartReplicas(2, {absl::StrCat("--auth_tokens_file=", TokensFile())});
+  remote::SmootherClient alice_on_a(ChannelWithToken(replicas_[0].port, kAliceToken));
+  remote::SmootherClient alice_on_b(ChannelWithToken(replicas_[1].port, kAliceToken));
+  remote::SmootherClient bob_on_b(ChannelWithToken(replicas_[1].port, kBobToken));
+  absl::StatusOr<v1::Job> submitted = alice_on_a.SubmitJob(ToWire(TetBlock(4, 0.3)), {});
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  ASSERT_TRUE(alice_on_b.WatchJob(submitted->job_id(), {}).ok());
+
+  // Bob is told exactly what an unknown id gets.
+  absl::StatusOr<v1::Job> bobs_view = bob_on_b.GetJob(submitted->job_id());
+  absl::StatusOr<v1::Job> unknown = bob_on_b.GetJob("000000000000");
+  EXPECT_EQ(bobs_view.status().code(), absl::StatusCode::kNotFound);
+  EXPECT_EQ(unknown.status().code(), absl::StatusCode::kNotFound);
+  EXPECT_EQ(std::string(bobs_view.status().message()),
+            absl::StrCat("no job with id '", submitted->job_id(),
+                         "' (unknown, or forgotten after its result expired)"));
+  EXPECT_EQ(bob_on_b.GetResult(submitted->job_id()).status().code(), absl::StatusCode::kNotFound);
+  EXPECT_EQ(bob_on_b.CancelJob(submitted->job_id()).status().code(), absl::StatusCode::kNotFound);
+  absl::StatusOr<std::vector<v1::Job>> bobs_jobs = bob_on_b.ListJobs();
+  ASSERT_TRUE(bobs_jobs.ok()) << bobs_jobs.status();
+  EXPECT_TRUE(bobs_jobs->empty());
+
+  absl::StatusOr<remote::RemoteSmoothResult> result = alice_on_b.GetResult(submitted->job_id());
+  ASSERT_TRUE(result.ok()) << result.status();
+  // No token at all: refused by every replica.
+  remote::SmootherClient anonymous(remote::SmootherClient::CreateChannel(replicas_[1].address));
+  EXPECT_EQ(anonymous.ListJobs().status().code(), absl::StatusCode::kUnauthenticated);
+}
+
+TEST_F(ReplicasTest, SigtermLeavesQueuedJobsInTheStoreAndHandsRunningOnesToTheOthers) {
+  StartReplicas(1, {"--workers=1", "--shutdown_grace=500ms"});
+  const v1::Mesh mesh = ToWire(TetBlock(6, 0.3));
+  remote::SmoothJobOptions forever;
+  forever.parameters = LongRunningParameters();
+  absl::StatusOr<v1::Job> running = replicas_[0].client->SubmitJob(mesh, forever);
+  ASSERT_TRUE(running.ok()) << running.status();
+  ASSERT_EQ(RunnerOf(running->job_id(), 1), 0);
+  absl::StatusOr<v1::Job> queued = replicas_[0].client->SubmitJob(mesh, forever);
+  ASSERT_TRUE(queued.ok()) << queued.status();
+
+  ASSERT_EQ(kill(replicas_[0].process.pid, SIGTERM), 0);
+  EXPECT_EQ(WaitForExit(replicas_[0].process.pid, absl::Seconds(30)), 0)
+      << ReadFile(replicas_[0].process.log_path);
+
+  // A replica started afterwards finds both: the queued one as it was, the running one again
+  // from the beginning.
+  StartReplicas(1, {"--workers=2"});
+  remote::SmootherClient& other = *replicas_[1].client;
+  EXPECT_EQ(RunnerOf(queued->job_id(), 1), 1);
+  EXPECT_EQ(RunnerOf(running->job_id(), 2), 1);
+  for (const v1::Job* job : {&*running, &*queued}) {
+    absl::StatusOr<v1::Job> described = other.GetJob(job->job_id());
+    ASSERT_TRUE(described.ok()) << described.status();
+    EXPECT_EQ(described->state(), v1::JOB_STATE_RUNNING) << described->DebugString();
+    ASSERT_TRUE(other.CancelJob(job->job_id()).ok());
+    ASSERT_TRUE(other.WatchJob(job->job_id(), {}).ok());
+  }
   ExpectStoreIdle();
 }
 
