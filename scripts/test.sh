@@ -6,7 +6,7 @@
 # and a summary with timings come last.
 # Environment:
 #   GETME_SKIP_SANITIZERS=1      run the Release suite only (no sanitizer or fuzz stage)
-#   GETME_FUZZ_SECONDS           seconds per fuzz target in the fuzz stage (default 10; 0 skips it)
+#   GETME_FUZZ_SECONDS           seconds per fuzz target in the fuzz stage (default 6; 0 skips it)
 #   GETME_SANITIZER_CTEST_ARGS   ctest filter for the sanitizer runs (default: -LE slow, i.e. all
 #                                tests but those labelled slow), e.g. "-R Smoother" or "" for all
 #   GETME_JOBS                   parallel compile and test jobs (default: every core)
@@ -76,7 +76,7 @@ run_fuzz_stage() {
     $((SECONDS - start)))")
 }
 
-fuzz_seconds="${GETME_FUZZ_SECONDS:-10}"
+fuzz_seconds="${GETME_FUZZ_SECONDS:-6}"
 if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ] || [ "$fuzz_seconds" = 0 ]; then
   summary+=("fuzzing skipped (GETME_SKIP_SANITIZERS=1 or GETME_FUZZ_SECONDS=0)")
 else

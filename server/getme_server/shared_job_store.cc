@@ -247,6 +247,8 @@ absl::StatusOr<bool> SharedJobStore::Finish(const std::string& id, std::uint32_t
     // into the result of the attempt that replaced it.
     result_key = absl::StrCat(JobKey(id), ":result:", attempt);
     if (auto s = PushAll(*redis_, result_key, result_messages, options_.result_ttl); !s.ok()) {
+      // Part of it may be there: freed at once, so the job can still be ended as failed.
+      (void)redis_->Command({"DEL", result_key});
       return s;
     }
   }

@@ -271,11 +271,25 @@ void StoreWorkers::RunTaken(TakenJob taken) {
     final_event->set_sequence(running->last_sequence + 1);
     final_event->set_final(true);
   }
+  const v1::Job described = DescribeForStore(*job, *running);
   absl::StatusOr<bool> finished =
-      store_.Finish(taken.id, taken.attempt, DescribeForStore(*job, *running), job->Summary(),
-                    messages, *final_event);
-  if (!finished.ok()) {
+      store_.Finish(taken.id, taken.attempt, described, job->Summary(), messages, *final_event);
+  if (!finished.ok() && !messages.empty()) {
+    // The result did not fit (a full Redis refuses writes): the job fails saying so, rather than
+    // expiring, being requeued and failing the same way again.
     spdlog::error("job={} result not written to the job store: {}", taken.id,
+                  finished.status().ToString());
+    v1::Job failed = described;
+    failed.set_state(v1::JOB_STATE_FAILED);
+    wire::ToWireJobError(
+        absl::ResourceExhaustedError(absl::StrCat(
+            "job ", taken.id, " succeeded but the shared job store could not keep its result (",
+            finished.status().message(), "); submit it again once results were fetched")),
+        failed);
+    finished = store_.Finish(taken.id, taken.attempt, failed, std::nullopt, {}, *final_event);
+  }
+  if (!finished.ok()) {
+    spdlog::error("job={} end not written to the job store: {}", taken.id,
                   finished.status().ToString());
   } else if (!*finished) {
     spdlog::warn("job={} phase=abandoned attempt={}: its lease went to another replica", taken.id,

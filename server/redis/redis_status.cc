@@ -65,6 +65,11 @@ absl::Status StatusFromErrorReply(absl::string_view text) {
     if (!message.empty()) message.remove_prefix(1);
     return absl::Status(named.code, absl::StripLeadingAsciiWhitespace(message));
   }
+  // Redis over its maxmemory with noeviction refuses writes with "OOM ...": a full store, which
+  // a caller may retry once results were fetched or expired.
+  if (absl::StartsWith(stripped, "OOM ")) {
+    return absl::ResourceExhaustedError(absl::StrCat("redis: ", stripped));
+  }
   return absl::InternalError(absl::StrCat("redis: ", text));
 }
 

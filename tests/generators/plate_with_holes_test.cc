@@ -17,16 +17,16 @@ using ::getme::testing::CheckBlockFaces;
 using ::getme::testing::ElementCentroid;
 using ::getme::testing::InvalidElements;
 
-constexpr std::int64_t kTestElements = 10'000;
+constexpr std::int64_t kPlateTestElements = 10'000;
 
 // One 10k-element plate shared by the tests.
 class PlateWithHolesTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    absl::StatusOr<PlateLayout> layout = PlateLayoutFor(kTestElements);
+    absl::StatusOr<PlateLayout> layout = PlateLayoutFor(kPlateTestElements);
     ASSERT_TRUE(layout.ok()) << layout.status();
     layout_ = new PlateLayout(*layout);
-    absl::StatusOr<Mesh> mesh = PlateWithHoles({.target_elements = kTestElements});
+    absl::StatusOr<Mesh> mesh = PlateWithHoles({.target_elements = kPlateTestElements});
     ASSERT_TRUE(mesh.ok()) << mesh.status();
     mesh_ = new Mesh(*std::move(mesh));
   }
@@ -49,7 +49,7 @@ TEST_F(PlateWithHolesTest, EveryElementIsValidAndAllThreeTypesArePresent) {
 }
 
 TEST_F(PlateWithHolesTest, ElementCountIsWithinTenPercentOfTheTarget) {
-  EXPECT_LE(std::llabs(mesh_->element_count() - kTestElements), kTestElements / 10);
+  EXPECT_LE(std::llabs(mesh_->element_count() - kPlateTestElements), kPlateTestElements / 10);
 }
 
 // Watertight: every face is shared by two elements except those on the box surface, which add up

@@ -19,7 +19,7 @@ using ::getme::testing::EnclosedVolume;
 using ::getme::testing::InvalidElements;
 using ::getme::testing::MeanRatios;
 
-constexpr std::int64_t kTestElements = 10'000;
+constexpr std::int64_t kRingTestElements = 10'000;
 // A grid point next to a cube lies within half a cube diagonal of the cube's centre.
 const double kHalfDiagonal = std::sqrt(3.0) / 2.0;
 
@@ -31,12 +31,12 @@ double DistanceFromCircle(const RingLayout& ring, const Vec3& p) {
 class RingInBlockTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    absl::StatusOr<RingLayout> layout = RingLayoutFor(kTestElements);
+    absl::StatusOr<RingLayout> layout = RingLayoutFor(kRingTestElements);
     ASSERT_TRUE(layout.ok()) << layout.status();
     layout_ = new RingLayout(*layout);
-    absl::StatusOr<Mesh> mesh = RingInBlock({.target_elements = kTestElements});
+    absl::StatusOr<Mesh> mesh = RingInBlock({.target_elements = kRingTestElements});
     absl::StatusOr<Mesh> regular =
-        RingInBlock({.target_elements = kTestElements, .distortion = 0.0});
+        RingInBlock({.target_elements = kRingTestElements, .distortion = 0.0});
     ASSERT_TRUE(mesh.ok()) << mesh.status();
     ASSERT_TRUE(regular.ok()) << regular.status();
     mesh_ = new Mesh(*std::move(mesh));
@@ -61,7 +61,7 @@ TEST_F(RingInBlockTest, EveryElementIsValidAndAllThreeTypesArePresent) {
   EXPECT_GT(mesh_->element_count(ElementType::kPyramid), 0);
   EXPECT_GT(mesh_->element_count(ElementType::kTetrahedron), 0);
   EXPECT_EQ(mesh_->element_count(ElementType::kPrism), 0);
-  EXPECT_LE(std::llabs(mesh_->element_count() - kTestElements), kTestElements / 10);
+  EXPECT_LE(std::llabs(mesh_->element_count() - kRingTestElements), kRingTestElements / 10);
 }
 
 // Watertight, and the only boundary besides the box is the ring's surface: every node of a

@@ -49,6 +49,13 @@ TEST(StatusFromErrorReply, OtherErrorsAreInternalWithTheWholeText) {
                                 "024f02195a7e52e1776d26af209f8a79d0470e0f, on @user_script:1."));
 }
 
+TEST(StatusFromErrorReply, AFullRedisIsResourceExhausted) {
+  const absl::Status status =
+      StatusFromErrorReply("OOM command not allowed when used memory > 'maxmemory'.");
+  EXPECT_EQ(status.code(), absl::StatusCode::kResourceExhausted);
+  EXPECT_EQ(status.message(), "redis: OOM command not allowed when used memory > 'maxmemory'.");
+}
+
 TEST(StatusFromErrorReply, ACodeNameMustBeAWholeWord) {
   EXPECT_EQ(StatusFromErrorReply("NOT_FOUNDING x"), absl::InternalError("redis: NOT_FOUNDING x"));
   EXPECT_EQ(StatusFromErrorReply("OK fine"), absl::InternalError("redis: OK fine"));

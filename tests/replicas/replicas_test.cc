@@ -398,6 +398,43 @@ TEST_F(ReplicasTest, SigtermLeavesQueuedJobsInTheStoreAndHandsRunningOnesToTheOt
   ExpectStoreIdle();
 }
 
+TEST_F(ReplicasTest, AResultTheFullStoreCannotKeepFailsTheJobWithResourceExhausted) {
+  StartReplicas(1, {"--workers=1"});
+  // The one worker is kept busy until the job under test is queued (its upload in the store).
+  remote::SmoothJobOptions forever;
+  forever.parameters = LongRunningParameters();
+  absl::StatusOr<v1::Job> blocker = replicas_[0].client->SubmitJob(ToWire(TetBlock(4, 0.3)), forever);
+  ASSERT_TRUE(blocker.ok()) << blocker.status();
+  ASSERT_EQ(RunnerOf(blocker->job_id(), 1), 0);
+  const v1::Mesh mesh = ToWire(TetBlock(16, 0.3));  // a result of about 0.5 MB
+  absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, {});
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  // Then Redis is allowed 100 kB more than it holds: the result cannot fit.
+  absl::StatusOr<redis::RedisReply> info = store_->Command({"INFO", "memory"});
+  ASSERT_TRUE(info.ok()) << info.status();
+  const std::size_t at = info->str().find("used_memory:");
+  ASSERT_NE(at, std::string::npos);
+  std::int64_t used = 0;
+  ASSERT_TRUE(absl::SimpleAtoi(
+      info->str().substr(at + 12, info->str().find('\r', at) - at - 12), &used));
+  ASSERT_TRUE(store_->Command({"CONFIG", "SET", "maxmemory-policy", "noeviction"}).ok());
+  ASSERT_TRUE(store_->Command({"CONFIG", "SET", "maxmemory", absl::StrCat(used + 100'000)}).ok());
+  ASSERT_TRUE(replicas_[0].client->CancelJob(blocker->job_id()).ok());
+
+  ASSERT_TRUE(replicas_[0].client->WatchJob(submitted->job_id(), {}).ok());
+  absl::StatusOr<v1::Job> ended = replicas_[0].client->GetJob(submitted->job_id());
+  ASSERT_TRUE(ended.ok()) << ended.status();
+  EXPECT_EQ(ended->state(), v1::JOB_STATE_FAILED);
+  EXPECT_EQ(ended->error_code(), static_cast<int>(absl::StatusCode::kResourceExhausted));
+  EXPECT_NE(ended->error_message().find("the shared job store could not keep its result"),
+            std::string::npos)
+      << ended->error_message();
+  EXPECT_EQ(replicas_[0].client->GetResult(submitted->job_id()).status().code(),
+            absl::StatusCode::kResourceExhausted);
+  ASSERT_TRUE(store_->Command({"CONFIG", "SET", "maxmemory", "0"}).ok());
+  ExpectStoreIdle();
+}
+
 TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
   const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-nostore-", getpid());
   // A port nothing listens on: the one the test's redis has, once it is gone.
