@@ -7,16 +7,36 @@
 namespace getme::server::store_scripts {
 namespace {
 
-// Redis's own clock, so replicas with skewed clocks agree on when a lease ends.
-constexpr char kNowMs[] = R"lua(
+// Shared by every script: Redis's own clock (so replicas with skewed clocks agree on when a lease
+// ends), and the end of a job.
+constexpr char kPrelude[] = R"lua(
 local function now_ms()
   local t = redis.call('TIME')
   return tonumber(t[1]) * 1000 + math.floor(tonumber(t[2]) / 1000)
 end
+-- What every end of a job does once its record holds the final state: the final event, the lease,
+-- upload and held bytes released, the record and events kept twice the result's time to live.
+local function end_job(p, id, upload_bytes, final_event, ttl_ms)
+  local job = p .. 'job:' .. id
+  redis.call('XADD', job .. ':events', '*', 'e', final_event)
+  redis.call('ZREM', p .. 'running', id)
+  redis.call('DECRBY', p .. 'held_bytes', tonumber(upload_bytes))
+  redis.call('DEL', job .. ':upload')
+  local keep = 2 * tonumber(ttl_ms)
+  redis.call('PEXPIRE', job, keep)
+  redis.call('PEXPIRE', job .. ':events', keep)
+end
 )lua";
 
 redis::RedisScript Script(const char* body) {
-  return redis::RedisScript(absl::StrCat(kNowMs, body));
+  return redis::RedisScript(absl::StrCat(kPrelude, body));
+}
+
+// A script that ends, moves or renews jobs and writes only a few bytes (most free an upload):
+// it still runs when Redis is over its maxmemory, so a full store can end its jobs as failed and
+// keep its leases instead of restarting them (Redis 7's script flags).
+redis::RedisScript SmallWriteScript(const char* body) {
+  return redis::RedisScript(absl::StrCat("#!lua flags=allow-oom\n", kPrelude, body));
 }
 
 }  // namespace
@@ -52,7 +72,7 @@ return {0}
 }
 
 const redis::RedisScript& Take() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, replica, lease = ARGV[1], ARGV[2], tonumber(ARGV[3])
 while true do
   local id = redis.call('LPOP', p .. 'queue')
@@ -71,7 +91,7 @@ end
 }
 
 const redis::RedisScript& Renew() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, id, replica = ARGV[1], ARGV[2], ARGV[3]
 local job = p .. 'job:' .. id
 local f = redis.call('HMGET', job, 'state', 'replica', 'cancel')
@@ -96,27 +116,21 @@ return 1
 }
 
 const redis::RedisScript& Finish() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, id, replica = ARGV[1], ARGV[2], ARGV[3]
 local job = p .. 'job:' .. id
 local f = redis.call('HMGET', job, 'state', 'replica', 'upload_bytes')
 if f[1] ~= '2' or f[2] ~= replica then return 0 end
 redis.call('HSET', job, 'state', ARGV[4], 'describe', ARGV[5], 'summary', ARGV[6],
            'result_key', ARGV[7], 'seq', ARGV[10], 'finished_ms', now_ms())
-redis.call('XADD', job .. ':events', '*', 'e', ARGV[8])
-redis.call('ZREM', p .. 'running', id)
-redis.call('DECRBY', p .. 'held_bytes', tonumber(f[3]))
-redis.call('DEL', job .. ':upload')
-local keep = 2 * tonumber(ARGV[9])
-redis.call('PEXPIRE', job, keep)
-redis.call('PEXPIRE', job .. ':events', keep)
+end_job(p, id, f[3], ARGV[8], ARGV[9])
 return 1
 )lua");
   return script;
 }
 
 const redis::RedisScript& ClaimExpired() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p = ARGV[1]
 local now = now_ms()
 local ids = redis.call('ZRANGEBYSCORE', p .. 'running', '-inf', now, 'LIMIT', 0,
@@ -146,7 +160,7 @@ return claimed
 }
 
 const redis::RedisScript& Requeue() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, id = ARGV[1], ARGV[2]
 local job = p .. 'job:' .. id
 if redis.call('HGET', job, 'state') ~= 'r' then return 0 end
@@ -161,7 +175,7 @@ return 1
 }
 
 const redis::RedisScript& CancelQueued() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, id = ARGV[1], ARGV[2]
 local job = p .. 'job:' .. id
 local f = redis.call('HMGET', job, 'state', 'seq', 'upload_bytes')
@@ -169,19 +183,14 @@ if f[1] ~= '1' or f[2] ~= ARGV[3] then return 0 end
 redis.call('LREM', p .. 'queue', 0, id)
 redis.call('HSET', job, 'state', '5', 'describe', ARGV[4], 'seq', tonumber(ARGV[3]) + 1,
            'finished_ms', now_ms())
-redis.call('XADD', job .. ':events', '*', 'e', ARGV[5])
-redis.call('DECRBY', p .. 'held_bytes', tonumber(f[3]))
-redis.call('DEL', job .. ':upload')
-local keep = 2 * tonumber(ARGV[6])
-redis.call('PEXPIRE', job, keep)
-redis.call('PEXPIRE', job .. ':events', keep)
+end_job(p, id, f[3], ARGV[5], ARGV[6])
 return 1
 )lua");
   return script;
 }
 
 const redis::RedisScript& RequestCancel() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, id = ARGV[1], ARGV[2]
 local job = p .. 'job:' .. id
 local state = redis.call('HGET', job, 'state')
@@ -193,7 +202,7 @@ return 1
 }
 
 const redis::RedisScript& TakeResult() {
-  static const redis::RedisScript script = Script(R"lua(
+  static const redis::RedisScript script = SmallWriteScript(R"lua(
 local p, id = ARGV[1], ARGV[2]
 local key = redis.call('HGET', p .. 'job:' .. id, 'result_key')
 if not key or key == '' or redis.call('EXISTS', key) == 0 then return 0 end

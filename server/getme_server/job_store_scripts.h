@@ -8,7 +8,8 @@ namespace getme::server::store_scripts {
 // (Redis runs a script atomically). docs/replicas.md describes the keys; every script takes the
 // key prefix as ARGV[1] and builds the keys from it, so the store needs one Redis (not a Redis
 // Cluster, whose scripts must declare their keys). Job states are v1::JobState's numbers; "r"
-// (requeuing) is the store's own: a lost job whose restart event is being written.
+// (requeuing) is the store's own: a lost job whose restart event is being written. Only Submit
+// and Append grow the store; the others run even when Redis is over its maxmemory.
 
 // ARGV: prefix, id, owner, describe, header, upload_bytes, max_queued_jobs, max_queued_bytes,
 // created_ms. Returns {0} queued, {1, queued jobs} queue full, {2, held bytes} bytes full,

@@ -46,6 +46,7 @@ bool IsFinal(v1::JobState state) {
 // queued or runs it), with the state the store holds now.
 struct JobRecord {
   bool exists = false;
+  std::string stored_state;  // as the store has it ("r" included)
   v1::JobState state = v1::JOB_STATE_UNSPECIFIED;
   v1::Job describe;
   std::string result_key;
@@ -63,6 +64,7 @@ JobRecord ReadRecord(const SharedJobStore& store, const std::string& key) {
   const auto& f = fields->elements();
   if (f.size() != 4 || f[0].is_nil()) return record;
   record.exists = true;
+  record.stored_state = f[0].str();
   record.state = ParseState(f[0]);
   record.describe.ParseFromString(f[1].str());
   record.describe.set_state(record.state);
@@ -105,9 +107,7 @@ void StoredJob::Cancel(absl::string_view reason) {
   for (int attempt = 0; attempt < 8; ++attempt) {
     const JobRecord record = ReadRecord(store_, key_);
     if (!record.exists || IsFinal(record.state)) return;
-    absl::StatusOr<redis::RedisReply> stored = store_.redis().Command({"HGET", key_, "state"});
-    const bool queued = stored.ok() && !stored->is_nil() && stored->str() == "1";
-    if (!queued) {
+    if (record.stored_state != "1") {  // running, or being requeued
       absl::StatusOr<redis::RedisReply> asked = store_.redis().Eval(
           store_scripts::RequestCancel(), {}, {store_.prefix(), id_, std::string(reason)});
       if (!asked.ok()) {

@@ -16,6 +16,7 @@
 #include "absl/time/clock.h"
 #include "auth_test_support.h"
 #include "gtest/gtest.h"
+#include "http_test_support.h"
 #include "redis/redis_address.h"
 #include "redis/redis_client.h"
 #include "redis_server_process.h"
@@ -34,6 +35,7 @@ constexpr char kLease[] = "--job_lease=1s";
 struct Replica {
   ServerProcess process;
   int port = 0;
+  int http_port = 0;  // 0 unless started with --http_listen
   std::string address;
   std::unique_ptr<remote::SmootherClient> client;
 };
@@ -77,6 +79,9 @@ class ReplicasTest : public ::testing::Test {
       const int port = WaitForPort(log);
       ASSERT_GT(port, 0) << ReadFile(log);
       replica.port = port;
+      for (const std::string& flag : flags) {
+        if (flag.rfind("--http_listen=127.", 0) == 0) replica.http_port = WaitForHttpPort(log);
+      }
       replica.address = absl::StrCat("127.0.0.1:", port);
       replica.client = std::make_unique<remote::SmootherClient>(
           remote::SmootherClient::CreateChannel(replica.address));
@@ -337,6 +342,46 @@ TEST_F(ReplicasTest, SixteenClientsAgainstAClusterQueueLimitLoseAndDuplicateNoth
   ExpectStoreIdle();
 }
 
+TEST_F(ReplicasTest, TheHttpGatewayAndDashboardOfAnyReplicaSeeTheWholeCluster) {
+  StartReplicas(3, {"--http_listen=127.0.0.1:0"});
+  std::vector<std::unique_ptr<httplib::Client>> http;
+  for (const Replica& replica : replicas_) {
+    ASSERT_GT(replica.http_port, 0);
+    http.push_back(std::make_unique<httplib::Client>("127.0.0.1", replica.http_port));
+  }
+  // Queued over HTTP (the JSON body's mesh is what the store keeps) on A.
+  const HttpReply created =
+      HttpPost(*http[0], "/v1/jobs", CreateJobJson(ToWire(TetBlock(4, 0.3)), {}));
+  ASSERT_EQ(created.status, 200) << created.body;
+  const std::string id = ParseJson<v1::Job>(created.body).job_id();
+
+  // Followed live on C: progress events, then the result summary, then the job's end.
+  const std::vector<SseEvent> events = ReadEventStream(*http[2], id);
+  ASSERT_GE(events.size(), 3u);
+  EXPECT_EQ(events.front().name, "progress");
+  EXPECT_EQ(events[events.size() - 2].name, "result");
+  EXPECT_EQ(events.back().name, "end");
+  EXPECT_EQ(ParseJson<v1::Job>(events.back().data).state(), v1::JOB_STATE_SUCCEEDED);
+
+  // Listed and reported on B.
+  const HttpReply listed = HttpGet(*http[1], "/v1/jobs");
+  ASSERT_EQ(listed.status, 200) << listed.body;
+  const auto jobs = ParseJson<v1::ListJobsResponse>(listed.body);
+  ASSERT_EQ(jobs.jobs_size(), 1);
+  EXPECT_EQ(jobs.jobs(0).job_id(), id);
+  const HttpReply report = HttpGet(*http[1], absl::StrCat("/v1/jobs/", id, "/report"));
+  ASSERT_EQ(report.status, 200) << report.body;
+  EXPECT_EQ(ParseJson<v1::SmoothResult>(report.body).job_id(), id);
+
+  // Every replica's /metrics counts the cluster: three live replicas, an empty shared queue.
+  for (auto& client : http) {
+    const std::map<std::string, double> metrics = ScrapeMetrics(*client);
+    EXPECT_EQ(metrics.at("getme_live_replicas"), 3);
+    EXPECT_EQ(metrics.at("getme_queue_length"), 0);
+  }
+  ExpectStoreIdle();
+}
+
 TEST_F(ReplicasTest, AJobIsVisibleOnlyToItsOwnerOnEveryReplica) {
   StartReplicas(2, {absl::StrCat("--auth_tokens_file=", TokensFile())});
   remote::SmootherClient alice_on_a(ChannelWithToken(replicas_[0].port, kAliceToken));
@@ -403,7 +448,8 @@ TEST_F(ReplicasTest, AResultTheFullStoreCannotKeepFailsTheJobWithResourceExhaust
   // The one worker is kept busy until the job under test is queued (its upload in the store).
   remote::SmoothJobOptions forever;
   forever.parameters = LongRunningParameters();
-  absl::StatusOr<v1::Job> blocker = replicas_[0].client->SubmitJob(ToWire(TetBlock(4, 0.3)), forever);
+  absl::StatusOr<v1::Job> blocker =
+      replicas_[0].client->SubmitJob(ToWire(TetBlock(4, 0.3)), forever);
   ASSERT_TRUE(blocker.ok()) << blocker.status();
   ASSERT_EQ(RunnerOf(blocker->job_id(), 1), 0);
   const v1::Mesh mesh = ToWire(TetBlock(16, 0.3));  // a result of about 0.5 MB
@@ -415,8 +461,8 @@ TEST_F(ReplicasTest, AResultTheFullStoreCannotKeepFailsTheJobWithResourceExhaust
   const std::size_t at = info->str().find("used_memory:");
   ASSERT_NE(at, std::string::npos);
   std::int64_t used = 0;
-  ASSERT_TRUE(absl::SimpleAtoi(
-      info->str().substr(at + 12, info->str().find('\r', at) - at - 12), &used));
+  ASSERT_TRUE(
+      absl::SimpleAtoi(info->str().substr(at + 12, info->str().find('\r', at) - at - 12), &used));
   ASSERT_TRUE(store_->Command({"CONFIG", "SET", "maxmemory-policy", "noeviction"}).ok());
   ASSERT_TRUE(store_->Command({"CONFIG", "SET", "maxmemory", absl::StrCat(used + 100'000)}).ok());
   ASSERT_TRUE(replicas_[0].client->CancelJob(blocker->job_id()).ok());
