@@ -58,8 +58,8 @@ ABSL_FLAG(absl::Duration, progress_interval, absl::Milliseconds(100),
           "the final event always go out)");
 ABSL_FLAG(std::string, job_store, "",
           "redis://[[user]:password@]host[:port][/db]: share jobs with every replica pointed at "
-          "the same Redis (queue, progress, results, limits; docs/replicas.md); empty = jobs live "
-          "in this process");
+          "the same Redis (queue, progress, results, limits; docs/replicas.md); rediss:// for TLS, "
+          "with ?cacert=PATH&cert=PATH&key=PATH as needed; empty = jobs live in this process");
 ABSL_FLAG(absl::Duration, job_lease, absl::Seconds(10),
           "with --job_store: a job whose replica has not renewed its lease for this long (it died) "
           "is queued again and restarted by another replica");

@@ -155,15 +155,21 @@ std::vector<v1::Job> SharedJobStore::DescribeJobs(absl::string_view owner) const
   absl::StatusOr<redis::RedisReply> ids =
       redis_->Command({"ZREVRANGE", owner_key, "0", absl::StrCat(kMaxListed - 1)});
   if (!ids.ok()) return jobs;
-  for (const redis::RedisReply& id : ids->elements()) {
-    absl::StatusOr<redis::RedisReply> exists = redis_->Command({"EXISTS", JobKey(id.str())});
-    if (exists.ok() && exists->integer() == 0) {
-      (void)redis_->Command({"ZREM", owner_key, id.str()});  // forgotten after its time to live
-      (void)redis_->Command({"ZREM", prefix_ + "jobs", id.str()});
+  std::vector<std::string> listed;
+  listed.reserve(ids->elements().size());
+  for (const redis::RedisReply& id : ids->elements()) listed.push_back(id.str());
+  std::vector<std::optional<v1::Job>> described = StoredJob::DescribeMany(*this, listed);
+  std::vector<std::vector<std::string>> forget;
+  for (std::size_t i = 0; i < described.size(); ++i) {
+    if (described[i]) {
+      jobs.push_back(*std::move(described[i]));
       continue;
     }
-    jobs.push_back(StoredJob(*this, id.str()).Describe());
+    // Forgotten after its time to live: the indexes forget it too.
+    forget.push_back({"ZREM", owner_key, listed[i]});
+    forget.push_back({"ZREM", prefix_ + "jobs", listed[i]});
   }
+  if (!forget.empty()) (void)redis_->Pipeline(forget);
   return jobs;
 }
 

@@ -53,15 +53,13 @@ struct JobRecord {
   std::string seq;
 };
 
-JobRecord ReadRecord(const SharedJobStore& store, const std::string& key) {
+std::vector<std::string> ReadRecordCommand(const std::string& key) {
+  return {"HMGET", key, "state", "describe", "result_key", "seq"};
+}
+
+JobRecord RecordFromReply(const redis::RedisReply& fields) {
   JobRecord record;
-  absl::StatusOr<redis::RedisReply> fields =
-      store.redis().Command({"HMGET", key, "state", "describe", "result_key", "seq"});
-  if (!fields.ok()) {
-    spdlog::warn("job store: reading {} failed: {}", key, fields.status().ToString());
-    return record;
-  }
-  const auto& f = fields->elements();
+  const auto& f = fields.elements();
   if (f.size() != 4 || f[0].is_nil()) return record;
   record.exists = true;
   record.stored_state = f[0].str();
@@ -71,6 +69,27 @@ JobRecord ReadRecord(const SharedJobStore& store, const std::string& key) {
   record.result_key = f[2].is_nil() ? "" : f[2].str();
   record.seq = f[3].is_nil() ? "0" : f[3].str();
   return record;
+}
+
+JobRecord ReadRecord(const SharedJobStore& store, const std::string& key) {
+  absl::StatusOr<redis::RedisReply> fields = store.redis().Command(ReadRecordCommand(key));
+  if (!fields.ok()) {
+    spdlog::warn("job store: reading {} failed: {}", key, fields.status().ToString());
+    return JobRecord();
+  }
+  return RecordFromReply(*fields);
+}
+
+// The description a front end shows: the record's, with its id and whether a result waits.
+v1::Job DescriptionOf(JobRecord record, const std::string& id, bool result_exists) {
+  v1::Job job = std::move(record.describe);
+  job.set_job_id(id);
+  job.set_result_available(result_exists);
+  return job;
+}
+
+bool ResultMayWait(const JobRecord& record) {
+  return record.state == v1::JOB_STATE_SUCCEEDED && !record.result_key.empty();
 }
 
 std::string RandomSuffix() {
@@ -85,16 +104,56 @@ StoredJob::StoredJob(const SharedJobStore& store, std::string id)
 
 v1::Job StoredJob::Describe() const {
   JobRecord record = ReadRecord(store_, key_);
-  v1::Job job = std::move(record.describe);
-  job.set_job_id(id_);
   bool available = false;
-  if (record.state == v1::JOB_STATE_SUCCEEDED && !record.result_key.empty()) {
+  if (ResultMayWait(record)) {
     absl::StatusOr<redis::RedisReply> exists =
         store_.redis().Command({"EXISTS", record.result_key});
     available = exists.ok() && exists->integer() == 1;
   }
-  job.set_result_available(available);
-  return job;
+  return DescriptionOf(std::move(record), id_, available);
+}
+
+std::vector<std::optional<v1::Job>> StoredJob::DescribeMany(const SharedJobStore& store,
+                                                            const std::vector<std::string>& ids) {
+  std::vector<std::vector<std::string>> reads;
+  reads.reserve(ids.size());
+  for (const std::string& id : ids) reads.push_back(ReadRecordCommand(store.JobKey(id)));
+  absl::StatusOr<std::vector<redis::RedisReply>> fields = store.redis().Pipeline(reads);
+  if (!fields.ok()) {
+    spdlog::warn("job store: reading {} job records failed: {}", ids.size(),
+                 fields.status().ToString());
+    return {};
+  }
+  std::vector<JobRecord> records;
+  records.reserve(ids.size());
+  std::vector<std::vector<std::string>> result_checks;
+  for (const redis::RedisReply& reply : *fields) {
+    records.push_back(RecordFromReply(reply));
+    if (ResultMayWait(records.back()))
+      result_checks.push_back({"EXISTS", records.back().result_key});
+  }
+  std::vector<redis::RedisReply> result_exists;
+  if (!result_checks.empty()) {
+    absl::StatusOr<std::vector<redis::RedisReply>> checked = store.redis().Pipeline(result_checks);
+    if (!checked.ok()) {
+      spdlog::warn("job store: checking {} results failed: {}", result_checks.size(),
+                   checked.status().ToString());
+      return {};
+    }
+    result_exists = *std::move(checked);
+  }
+  std::vector<std::optional<v1::Job>> jobs;
+  jobs.reserve(ids.size());
+  std::size_t next_check = 0;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (!records[i].exists) {
+      jobs.emplace_back();
+      continue;
+    }
+    const bool available = ResultMayWait(records[i]) && result_exists[next_check++].integer() == 1;
+    jobs.emplace_back(DescriptionOf(std::move(records[i]), ids[i], available));
+  }
+  return jobs;
 }
 
 std::shared_ptr<EventSource> StoredJob::WatchEvents() {

@@ -7,11 +7,13 @@
 #include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_split.h"
 
 namespace getme::redis {
 namespace {
 
-constexpr absl::string_view kForm = "redis://[[user]:password@]host[:port][/db]";
+constexpr absl::string_view kForm = "redis[s]://[[user]:password@]host[:port][/db]";
+constexpr absl::string_view kTlsParameters = "cacert, cert, key";
 
 std::optional<int> HexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -43,6 +45,39 @@ std::string HostForUrl(const std::string& host) {
   return absl::StrContains(host, ':') ? absl::StrCat("[", host, "]") : host;
 }
 
+// cacert=PATH&cert=PATH&key=PATH, each at most once, values percent-decoded.
+absl::Status ParseTlsParameters(absl::string_view query, RedisAddress& address) {
+  for (absl::string_view parameter : absl::StrSplit(query, '&')) {
+    const size_t equals = parameter.find('=');
+    const absl::string_view name = parameter.substr(0, equals);
+    std::string* field = name == "cacert" ? &address.tls_ca_file
+                         : name == "cert" ? &address.tls_cert_file
+                         : name == "key"  ? &address.tls_key_file
+                                          : nullptr;
+    if (field == nullptr) {
+      return absl::InvalidArgumentError(absl::StrCat("redis URL: unknown parameter '", name,
+                                                     "' (rediss:// takes ", kTlsParameters, ")"));
+    }
+    std::optional<std::string> value = equals == absl::string_view::npos
+                                           ? std::nullopt
+                                           : PercentDecode(parameter.substr(equals + 1));
+    if (!value || value->empty()) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("redis URL: parameter '", name, "' needs a file path: ", name, "=PATH"));
+    }
+    if (!field->empty()) {
+      return absl::InvalidArgumentError(
+          absl::StrCat("redis URL: parameter '", name, "' is given twice"));
+    }
+    *field = *std::move(value);
+  }
+  if (address.tls_cert_file.empty() != address.tls_key_file.empty()) {
+    return absl::InvalidArgumentError(
+        "redis URL: 'cert' and 'key' go together: a client certificate needs its private key");
+  }
+  return absl::OkStatus();
+}
+
 }  // namespace
 
 absl::StatusOr<RedisAddress> ParseRedisUrl(absl::string_view url) {
@@ -51,27 +86,32 @@ absl::StatusOr<RedisAddress> ParseRedisUrl(absl::string_view url) {
     return absl::InvalidArgumentError(absl::StrCat("redis URL: no scheme, expected ", kForm));
   }
   const std::string scheme = absl::AsciiStrToLower(url.substr(0, scheme_end));
-  if (scheme == "rediss") {
-    return absl::UnimplementedError(
-        "redis URL: rediss:// (TLS) is not supported: Debian bookworm's hiredis 0.14 has no TLS. "
-        "Reach Redis over a private network, or put a TLS tunnel (stunnel, spiped) in front of "
-        "it and give its local end as redis://");
+  if (scheme != "redis" && scheme != "rediss") {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "redis URL: scheme '", scheme, "://' is neither redis:// nor rediss://, expected ", kForm));
   }
-  if (scheme != "redis") {
-    return absl::InvalidArgumentError(
-        absl::StrCat("redis URL: scheme '", scheme, "://' is not redis://, expected ", kForm));
-  }
+  RedisAddress address;
+  address.tls = scheme == "rediss";
   absl::string_view rest = url.substr(scheme_end + 3);
-  if (rest.find_first_of("?#") != absl::string_view::npos) {
-    return absl::InvalidArgumentError(
-        "redis URL: query parameters and fragments ('?', '#') are not supported");
+  if (rest.find('#') != absl::string_view::npos) {
+    return absl::InvalidArgumentError("redis URL: fragments ('#') are not supported");
+  }
+  if (const size_t query_start = rest.find('?'); query_start != absl::string_view::npos) {
+    if (!address.tls) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "redis URL: query parameters are for rediss:// (TLS) only: ", kTlsParameters));
+    }
+    if (absl::Status status = ParseTlsParameters(rest.substr(query_start + 1), address);
+        !status.ok()) {
+      return status;
+    }
+    rest = rest.substr(0, query_start);
   }
   const size_t path_start = rest.find('/');
   absl::string_view authority = rest.substr(0, path_start);
   const absl::string_view path =
       path_start == absl::string_view::npos ? absl::string_view() : rest.substr(path_start + 1);
 
-  RedisAddress address;
   // The last '@' ends the user information, so an unencoded '@' in a password still parses.
   const size_t at = authority.rfind('@');
   if (at != absl::string_view::npos) {
@@ -149,8 +189,8 @@ absl::StatusOr<RedisAddress> ParseRedisUrl(absl::string_view url) {
 std::string RedactedUrl(const RedisAddress& address) {
   std::string user_info;
   if (!address.password.empty()) user_info = absl::StrCat(address.user, ":***@");
-  return absl::StrCat("redis://", user_info, HostForUrl(address.host), ":", address.port, "/",
-                      address.db);
+  return absl::StrCat(address.tls ? "rediss://" : "redis://", user_info, HostForUrl(address.host),
+                      ":", address.port, "/", address.db);
 }
 
 }  // namespace getme::redis

@@ -17,17 +17,29 @@ struct RedisAddress {
   std::string user;
   std::string password;  // empty: no AUTH
   int db = 0;            // sent as SELECT when not 0
+
+  // rediss://: the connection is TLS (1.2 or later); the server's certificate must chain to
+  // `tls_ca_file` (PEM) or, when that is empty, to the system's trusted CAs, and name `host`
+  // (a DNS name or an IP address in its subjectAltName). A client certificate is sent when
+  // `tls_cert_file` and `tls_key_file` are set (Redis's tls-auth-clients, on by default).
+  bool tls = false;
+  std::string tls_ca_file;
+  std::string tls_cert_file;
+  std::string tls_key_file;
 };
 
-// redis://[[user]:password@]host[:port][/db], e.g. redis://:s3cret@redis:6379/2. The user and
-// password may be percent-encoded (RFC 3986), which is how a password holding '@', ':' or '/'
-// is written. A user without a password (redis://user@host) is refused: there would be nothing
-// to send AUTH with. INVALID_ARGUMENT naming the part that is wrong (scheme, host, port,
-// database, percent-encoding); the message never repeats the URL, which may hold the password.
-// rediss:// (TLS) is UNIMPLEMENTED: Debian bookworm's hiredis 0.14 has no TLS support.
+// redis://[[user]:password@]host[:port][/db], e.g. redis://:s3cret@redis:6379/2, or the same
+// with rediss:// for TLS, which takes the files as query parameters named like redis-cli's
+// flags: rediss://host:6380/0?cacert=/etc/ca.pem&cert=/etc/client.pem&key=/etc/client.key
+// (cert and key together or neither). The user, password and parameter values may be
+// percent-encoded (RFC 3986), which is how a password holding '@', ':' or '/' is written. A
+// user without a password (redis://user@host) is refused: there would be nothing to send AUTH
+// with. INVALID_ARGUMENT naming the part that is wrong (scheme, host, port, database,
+// percent-encoding, parameter); the message never repeats the URL, which may hold the password.
 absl::StatusOr<RedisAddress> ParseRedisUrl(absl::string_view url);
 
-// The address as a URL for logs and error messages, the password replaced by ***.
+// The address as a URL for logs and error messages, the password replaced by *** (the TLS files
+// are left out: they are not secret, but long).
 std::string RedactedUrl(const RedisAddress& address);
 
 }  // namespace getme::redis

@@ -69,6 +69,15 @@ absl::StatusOr<std::unique_ptr<RedisConnection>> RedisConnection::Open(
   // connecting too, so they get the same bound.
   if (absl::Status status = connection->SetTimeout(connect_timeout); !status.ok()) return status;
   redisEnableKeepAlive(context);  // notices a vanished server during a long BLPOP
+  if (address.tls) {
+    absl::StatusOr<std::unique_ptr<TlsSession>> session =
+        TlsSession::Handshake(context->fd, address, redacted_url);
+    if (absl::IsDeadlineExceeded(session.status())) {
+      return absl::UnavailableError(session.status().message());  // as for AUTH below
+    }
+    if (!session.ok()) return session.status();
+    connection->tls_ = *std::move(session);
+  }
 
   auto login_step = [&](const RedisArgs& command, absl::StatusCode refused_code,
                         absl::string_view name) -> absl::Status {
@@ -104,7 +113,10 @@ absl::StatusOr<std::unique_ptr<RedisConnection>> RedisConnection::Open(
   return connection;
 }
 
-RedisConnection::~RedisConnection() { redisFree(context_); }
+RedisConnection::~RedisConnection() {
+  tls_.reset();  // its close_notify goes out before hiredis closes the socket
+  redisFree(context_);
+}
 
 absl::Status RedisConnection::SetTimeout(absl::Duration timeout) {
   if (redisSetTimeout(context_, absl::ToTimeval(timeout)) != REDIS_OK) {
@@ -121,6 +133,7 @@ absl::StatusOr<std::vector<RedisReply>> RedisConnection::Exchange(
     return absl::UnavailableError(
         absl::StrCat("redis: connection to ", redacted_url_, " is broken"));
   }
+  if (tls_ != nullptr) return ExchangeOverTls(commands);
   std::vector<const char*> words;
   std::vector<size_t> lengths;
   for (const RedisArgs& command : commands) {
@@ -148,6 +161,66 @@ absl::StatusOr<std::vector<RedisReply>> RedisConnection::Exchange(
       broken_ = true;
       return StatusFromConnectionError(context_->err, error_number, context_->errstr,
                                        Describe(commands, redacted_url_));
+    }
+    std::unique_ptr<void, ReplyDeleter> owned(raw);
+    replies.push_back(CopyReply(*static_cast<const redisReply*>(raw)));
+  }
+  return replies;
+}
+
+absl::StatusOr<std::vector<RedisReply>> RedisConnection::ExchangeOverTls(
+    const std::vector<RedisArgs>& commands) {
+  // Every command formatted into one request, as redisAppendCommandArgv would buffer them.
+  std::string request;
+  std::vector<const char*> words;
+  std::vector<size_t> lengths;
+  for (const RedisArgs& command : commands) {
+    words.clear();
+    lengths.clear();
+    for (std::string_view word : command) {
+      words.push_back(word.data());
+      lengths.push_back(word.size());
+    }
+    char* formatted = nullptr;
+    const int length = redisFormatCommandArgv(&formatted, static_cast<int>(words.size()),
+                                              words.data(), lengths.data());
+    if (length < 0) {
+      broken_ = true;
+      return absl::InternalError(
+          absl::StrCat("redis: ", Describe(commands, redacted_url_), ": out of memory"));
+    }
+    request.append(formatted, static_cast<size_t>(length));
+    redisFreeCommand(formatted);
+  }
+  const std::string what = Describe(commands, redacted_url_);
+  if (absl::Status status = tls_->WriteAll(request, what); !status.ok()) {
+    broken_ = true;
+    return status;
+  }
+  // hiredis's own reader (the context's, unused otherwise) parses what TLS decrypts.
+  redisReader* reader = context_->reader;
+  std::vector<RedisReply> replies;
+  replies.reserve(commands.size());
+  char buffer[16 * 1024];
+  while (replies.size() < commands.size()) {
+    void* raw = nullptr;
+    if (redisReaderGetReply(reader, &raw) != REDIS_OK) {
+      broken_ = true;
+      return absl::UnavailableError(
+          absl::StrCat("redis: ", what, " failed: protocol error: ", reader->errstr));
+    }
+    if (raw == nullptr) {
+      absl::StatusOr<size_t> received = tls_->Read(buffer, sizeof(buffer), what);
+      if (!received.ok()) {
+        broken_ = true;
+        return received.status();
+      }
+      if (redisReaderFeed(reader, buffer, *received) != REDIS_OK) {
+        broken_ = true;
+        return absl::UnavailableError(
+            absl::StrCat("redis: ", what, " failed: protocol error: ", reader->errstr));
+      }
+      continue;
     }
     std::unique_ptr<void, ReplyDeleter> owned(raw);
     replies.push_back(CopyReply(*static_cast<const redisReply*>(raw)));

@@ -68,26 +68,59 @@ TEST(ParseRedisUrl, ReadsIpv6Literals) {
 
 TEST(ParseRedisUrl, RefusesOtherSchemes) {
   ExpectRefused("redis-host:6379", absl::StatusCode::kInvalidArgument,
-                "redis URL: no scheme, expected redis://[[user]:password@]host[:port][/db]");
+                "redis URL: no scheme, expected redis[s]://[[user]:password@]host[:port][/db]");
   ExpectRefused("http://redis:6379", absl::StatusCode::kInvalidArgument,
-                "redis URL: scheme 'http://' is not redis://, expected "
-                "redis://[[user]:password@]host[:port][/db]");
+                "redis URL: scheme 'http://' is neither redis:// nor rediss://, expected "
+                "redis[s]://[[user]:password@]host[:port][/db]");
   ExpectRefused("unix:///run/redis.sock", absl::StatusCode::kInvalidArgument,
-                "redis URL: scheme 'unix://' is not redis://, expected "
-                "redis://[[user]:password@]host[:port][/db]");
+                "redis URL: scheme 'unix://' is neither redis:// nor rediss://, expected "
+                "redis[s]://[[user]:password@]host[:port][/db]");
 }
 
-TEST(ParseRedisUrl, TlsIsUnimplementedWithAWayOut) {
-  ExpectRefused(
-      "rediss://:pw@redis:6380", absl::StatusCode::kUnimplemented,
-      "redis URL: rediss:// (TLS) is not supported: Debian bookworm's hiredis 0.14 has no TLS. "
-      "Reach Redis over a private network, or put a TLS tunnel (stunnel, spiped) in front of it "
-      "and give its local end as redis://");
+TEST(ParseRedisUrl, RedissIsTlsWithItsFilesAsParameters) {
+  const RedisAddress plain = Parsed("redis://redis:6380");
+  EXPECT_FALSE(plain.tls);
+  const RedisAddress bare = Parsed("rediss://:pw@redis:6380/1");
+  EXPECT_TRUE(bare.tls);
+  EXPECT_EQ(bare.password, "pw");
+  EXPECT_EQ(bare.db, 1);
+  EXPECT_EQ(bare.tls_ca_file, "");  // the system's trusted CAs
+  EXPECT_EQ(bare.tls_cert_file, "");
+
+  const RedisAddress files =
+      Parsed("rediss://redis/0?cacert=/etc/ca.pem&cert=/etc/my%20client.pem&key=/etc/c.key");
+  EXPECT_TRUE(files.tls);
+  EXPECT_EQ(files.host, "redis");
+  EXPECT_EQ(files.db, 0);
+  EXPECT_EQ(files.tls_ca_file, "/etc/ca.pem");
+  EXPECT_EQ(files.tls_cert_file, "/etc/my client.pem");
+  EXPECT_EQ(files.tls_key_file, "/etc/c.key");
+  // Without a path: the parameters follow the authority.
+  EXPECT_EQ(Parsed("REDISS://[::1]:7000?cacert=ca.pem").tls_ca_file, "ca.pem");
+}
+
+TEST(ParseRedisUrl, RefusesBadTlsParameters) {
+  ExpectRefused("rediss://redis?timeout=1", absl::StatusCode::kInvalidArgument,
+                "redis URL: unknown parameter 'timeout' (rediss:// takes cacert, cert, key)");
+  ExpectRefused("rediss://redis?cacert", absl::StatusCode::kInvalidArgument,
+                "redis URL: parameter 'cacert' needs a file path: cacert=PATH");
+  ExpectRefused("rediss://redis?cacert=", absl::StatusCode::kInvalidArgument,
+                "redis URL: parameter 'cacert' needs a file path: cacert=PATH");
+  ExpectRefused("rediss://redis?cacert=%zz", absl::StatusCode::kInvalidArgument,
+                "redis URL: parameter 'cacert' needs a file path: cacert=PATH");
+  ExpectRefused("rediss://redis?cacert=a&cacert=b", absl::StatusCode::kInvalidArgument,
+                "redis URL: parameter 'cacert' is given twice");
+  ExpectRefused("rediss://redis?cert=c.pem", absl::StatusCode::kInvalidArgument,
+                "redis URL: 'cert' and 'key' go together: a client certificate needs its private "
+                "key");
+  ExpectRefused("rediss://redis?key=c.key", absl::StatusCode::kInvalidArgument,
+                "redis URL: 'cert' and 'key' go together: a client certificate needs its private "
+                "key");
 }
 
 TEST(ParseRedisUrl, RefusesAMissingHost) {
   const std::string message =
-      "redis URL: no host, expected redis://[[user]:password@]host[:port][/db]";
+      "redis URL: no host, expected redis[s]://[[user]:password@]host[:port][/db]";
   ExpectRefused("redis://", absl::StatusCode::kInvalidArgument, message);
   ExpectRefused("redis://:6379", absl::StatusCode::kInvalidArgument, message);
   ExpectRefused("redis://:pw@/0", absl::StatusCode::kInvalidArgument, message);
@@ -111,10 +144,12 @@ TEST(ParseRedisUrl, RefusesBadDatabases) {
   }
 }
 
-TEST(ParseRedisUrl, RefusesQueriesAndFragments) {
-  for (const char* url : {"redis://redis?timeout=1", "redis://redis/0#x"}) {
+TEST(ParseRedisUrl, RefusesQueriesWithoutTlsAndFragments) {
+  ExpectRefused("redis://redis?cacert=ca.pem", absl::StatusCode::kInvalidArgument,
+                "redis URL: query parameters are for rediss:// (TLS) only: cacert, cert, key");
+  for (const char* url : {"redis://redis/0#x", "rediss://redis/0?cacert=a#x"}) {
     ExpectRefused(url, absl::StatusCode::kInvalidArgument,
-                  "redis URL: query parameters and fragments ('?', '#') are not supported");
+                  "redis URL: fragments ('#') are not supported");
   }
 }
 
@@ -156,6 +191,8 @@ TEST(RedactedUrl, HidesThePasswordOnly) {
   EXPECT_EQ(RedactedUrl(Parsed("redis://getme:s3cret@redis")), "redis://getme:***@redis:6379/0");
   EXPECT_EQ(RedactedUrl(Parsed("redis://redis")), "redis://redis:6379/0");
   EXPECT_EQ(RedactedUrl(Parsed("redis://[::1]:7000")), "redis://[::1]:7000/0");
+  EXPECT_EQ(RedactedUrl(Parsed("rediss://:s3cret@redis?cacert=/ca.pem")),
+            "rediss://:***@redis:6379/0");
 }
 
 TEST(RedactedUrl, ParsesBackToTheSameServer) {
@@ -165,6 +202,8 @@ TEST(RedactedUrl, ParsesBackToTheSameServer) {
   EXPECT_EQ(reparsed.port, address.port);
   EXPECT_EQ(reparsed.user, address.user);
   EXPECT_EQ(reparsed.db, address.db);
+  EXPECT_FALSE(reparsed.tls);
+  EXPECT_TRUE(Parsed(RedactedUrl(Parsed("rediss://redis"))).tls);
 }
 
 }  // namespace

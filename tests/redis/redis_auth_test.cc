@@ -9,7 +9,11 @@ namespace {
 
 class RedisAuthTest : public RedisServerTest {
  protected:
-  RedisServerProcess::Options ServerOptions() const override { return {.password = "s3cret"}; }
+  RedisServerProcess::Options ServerOptions() const override {
+    RedisServerProcess::Options options;
+    options.password = "s3cret";
+    return options;
+  }
 };
 
 TEST_F(RedisAuthTest, TheRightPasswordLogsIn) {

@@ -56,6 +56,21 @@ bool Answers(int port) {
   return answered;
 }
 
+// A TLS port cannot be PINGed by plain hiredis: that it accepts connections is enough, since
+// redis-server opens its ports last.
+bool Listens(int port) {
+  const int socket_fd = socket(AF_INET, SOCK_STREAM, 0);
+  if (socket_fd < 0) return false;
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  const bool listens =
+      connect(socket_fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
+  close(socket_fd);
+  return listens;
+}
+
 }  // namespace
 
 bool RedisServerProcess::Available() { return access(kBinary, X_OK) == 0; }
@@ -88,9 +103,23 @@ absl::Status RedisServerProcess::Launch() {
                                    "",       "--appendonly", "no",
                                    "--dir",  directory_,     "--logfile",
                                    log_path, "--daemonize",  "no"};
+  for (const std::string& address : options_.extra_bind_addresses) {
+    args[4] += " " + address;
+  }
   if (!options_.password.empty()) {
     args.push_back("--requirepass");
     args.push_back(options_.password);
+  }
+  if (options_.tls) {
+    args[2] = "0";  // no plain port
+    for (const std::string& arg :
+         {std::string("--tls-port"), absl::StrCat(port_), std::string("--tls-cert-file"),
+          options_.tls->cert_file, std::string("--tls-key-file"), options_.tls->key_file,
+          std::string("--tls-ca-cert-file"), options_.tls->ca_file,
+          std::string("--tls-auth-clients"),
+          std::string(options_.tls->require_client_certificate ? "yes" : "no")}) {
+      args.push_back(arg);
+    }
   }
   std::vector<char*> argv;
   for (std::string& arg : args) argv.push_back(arg.data());
@@ -114,7 +143,7 @@ absl::Status RedisServerProcess::Launch() {
       }
       return absl::UnavailableError(absl::StrCat("redis-server exited early:\n", text));
     }
-    if (Answers(port_)) return absl::OkStatus();
+    if (options_.tls ? Listens(port_) : Answers(port_)) return absl::OkStatus();
     absl::SleepFor(absl::Milliseconds(10));
   }
   Stop(SIGKILL, true);
@@ -153,6 +182,10 @@ absl::Status RedisServerProcess::Restart() {
 
 std::string RedisServerProcess::url() const {
   const std::string login = options_.password.empty() ? "" : ":" + options_.password + "@";
+  if (options_.tls) {
+    return absl::StrCat("rediss://", login, "127.0.0.1:", port_,
+                        "/0?cacert=", options_.tls->ca_file);
+  }
   return absl::StrCat("redis://", login, "127.0.0.1:", port_);
 }
 

@@ -3,7 +3,9 @@
 #include <sys/types.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "absl/status/statusor.h"
 
@@ -17,6 +19,18 @@ class RedisServerProcess {
 
   struct Options {
     std::string password;  // --requirepass when not empty
+    // TLS only (--port 0 --tls-port): the server's certificate and key, and the CA its clients'
+    // certificates must chain to. `require_client_certificate` is Redis's tls-auth-clients.
+    struct Tls {
+      std::string cert_file;
+      std::string key_file;
+      std::string ca_file;
+      bool require_client_certificate = false;
+    };
+    std::optional<Tls> tls;
+    // Loopback addresses to listen on besides 127.0.0.1 (e.g. 127.0.0.2, which the test
+    // certificates do not name).
+    std::vector<std::string> extra_bind_addresses;
   };
 
   // False when redis-server is not installed: tests then GTEST_SKIP (CI installs it through
@@ -38,7 +52,8 @@ class RedisServerProcess {
   absl::Status Restart();
 
   int port() const { return port_; }
-  // redis://[:password@]127.0.0.1:port
+  // redis://[:password@]127.0.0.1:port, or with TLS
+  // rediss://[:password@]127.0.0.1:port/0?cacert=CA (no client certificate)
   std::string url() const;
   std::string log() const;
 

@@ -21,8 +21,10 @@
 #include "redis/redis_client.h"
 #include "redis_server_process.h"
 #include "remote/smoother_client.h"
+#include "run_getme.h"
 #include "server_process.h"
 #include "server_test_support.h"
+#include "test_certificates.h"
 
 namespace getme::server::testing {
 namespace {
@@ -44,16 +46,21 @@ class ReplicasTest : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!RedisServerProcess::Available()) GTEST_SKIP() << "no /usr/bin/redis-server";
-    absl::StatusOr<std::unique_ptr<RedisServerProcess>> redis = RedisServerProcess::Start();
+    absl::StatusOr<std::unique_ptr<RedisServerProcess>> redis =
+        RedisServerProcess::Start(RedisOptions());
     ASSERT_TRUE(redis.ok()) << redis.status();
     redis_ = *std::move(redis);
-    absl::StatusOr<redis::RedisAddress> address = redis::ParseRedisUrl(redis_->url());
+    absl::StatusOr<redis::RedisAddress> address = redis::ParseRedisUrl(StoreUrl());
     ASSERT_TRUE(address.ok()) << address.status();
     absl::StatusOr<std::unique_ptr<redis::RedisClient>> store =
         redis::RedisClient::Connect(*address);
     ASSERT_TRUE(store.ok()) << store.status();
     store_ = *std::move(store);
   }
+
+  virtual RedisServerProcess::Options RedisOptions() const { return {}; }
+  // What the replicas and the test's own client give as --job_store.
+  virtual std::string StoreUrl() const { return redis_->url(); }
 
   void TearDown() override {
     for (Replica& replica : replicas_) {
@@ -70,7 +77,7 @@ class ReplicasTest : public ::testing::Test {
       static std::atomic<int> started{0};
       const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-", getpid(), "-",
                                            started.fetch_add(1), ".log");
-      std::vector<std::string> flags = {absl::StrCat("--job_store=", redis_->url()), kLease,
+      std::vector<std::string> flags = {absl::StrCat("--job_store=", StoreUrl()), kLease,
                                         "--progress_interval=0"};
       flags.insert(flags.end(), extra_flags.begin(), extra_flags.end());
       Replica replica;
@@ -287,6 +294,24 @@ TEST_F(ReplicasTest, AKilledReplicasJobIsRestartedElsewhereWithTheSameBitsAndThe
   EXPECT_GE(RunnerOf(submitted->job_id(), 2), 0);
   EXPECT_NE(RunnerOf(submitted->job_id(), 2), runner);
 
+  // The CLI announces the restart to a user watching (here replaying the stored events), on
+  // stderr and in --json, and still ends successfully.
+  const cli::testing::RunResult watch =
+      cli::testing::RunGetme({"jobs", "watch", submitted->job_id(), "--server", fetcher.address});
+  EXPECT_EQ(watch.exit_status, 0) << watch.err;
+  EXPECT_NE(watch.err.find(absl::StrCat("[info] job ", submitted->job_id(),
+                                        " restarted from the beginning (attempt 2): the replica "
+                                        "running it was lost\n")),
+            std::string::npos)
+      << watch.err;
+  const cli::testing::RunResult json = cli::testing::RunGetme(
+      {"jobs", "watch", submitted->job_id(), "--server", fetcher.address, "--json"});
+  EXPECT_EQ(json.exit_status, 0) << json.err;
+  EXPECT_NE(json.out.find(absl::StrCat(R"({"event":"restarted","job_id":")", submitted->job_id(),
+                                       R"(","attempt":2})")),
+            std::string::npos)
+      << json.out;
+
   absl::StatusOr<remote::RemoteSmoothResult> result =
       fetcher.client->GetResult(submitted->job_id());
   ASSERT_TRUE(result.ok()) << result.status();
@@ -481,6 +506,40 @@ TEST_F(ReplicasTest, AResultTheFullStoreCannotKeepFailsTheJobWithResourceExhaust
   ExpectStoreIdle();
 }
 
+TEST_F(ReplicasTest, TheJobListIsNewestFirstSaysWhichResultsWaitAndForgetsExpiredJobs) {
+  StartReplicas(2);
+  const v1::Mesh mesh = ToWire(TetBlock(4, 0.3));
+  std::vector<std::string> ids;  // oldest first
+  for (int i = 0; i < 4; ++i) {
+    absl::StatusOr<v1::Job> submitted = replicas_[i % 2].client->SubmitJob(mesh, {});
+    ASSERT_TRUE(submitted.ok()) << submitted.status();
+    ASSERT_TRUE(replicas_[0].client->WatchJob(submitted->job_id(), {}).ok());
+    ids.push_back(submitted->job_id());
+    absl::SleepFor(absl::Milliseconds(2));  // distinct creation times
+  }
+  ASSERT_TRUE(replicas_[1].client->GetResult(ids[1]).ok());  // fetched: no longer available
+  // What the time to live does to a job: its record is gone, its index entries stay.
+  ASSERT_EQ(StoreInteger({"DEL", "getme:job:" + ids[2]}), 1);
+
+  for (Replica& replica : replicas_) {
+    absl::StatusOr<std::vector<v1::Job>> listed = replica.client->ListJobs();
+    ASSERT_TRUE(listed.ok()) << listed.status();
+    ASSERT_EQ(listed->size(), 3u);
+    EXPECT_EQ((*listed)[0].job_id(), ids[3]);
+    EXPECT_EQ((*listed)[1].job_id(), ids[1]);
+    EXPECT_EQ((*listed)[2].job_id(), ids[0]);
+    for (const v1::Job& job : *listed) {
+      EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED) << job.job_id();
+      EXPECT_EQ(job.result_available(), job.job_id() != ids[1]) << job.job_id();
+      EXPECT_EQ(job.elements(), 384u) << job.job_id();  // 6 × 4³ tetrahedra
+    }
+  }
+  EXPECT_EQ(StoreInteger({"ZCARD", "getme:jobs"}), 3);
+  for (const std::string& id : {ids[0], ids[3]})
+    ASSERT_TRUE(replicas_[0].client->GetResult(id).ok());
+  ExpectStoreIdle();
+}
+
 TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
   const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-nostore-", getpid());
   // A port nothing listens on: the one the test's redis has, once it is gone.
@@ -490,6 +549,66 @@ TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
   EXPECT_EQ(WaitForExit(server.pid, absl::Seconds(20)), 1);
   EXPECT_NE(ReadFile(log).find("--job_store: redis: cannot connect to " + url), std::string::npos)
       << ReadFile(log);
+}
+
+// The store over TLS with a password and a client certificate, as a managed Redis would be
+// reached: the replicas share jobs through it as through a plain one.
+class ReplicasOverTlsTest : public ReplicasTest {
+ protected:
+  RedisServerProcess::Options RedisOptions() const override {
+    const TestCertificates& certificates = GetTestCertificates();
+    RedisServerProcess::Options options;
+    options.password = "s3cret";
+    options.tls = RedisServerProcess::Options::Tls{.cert_file = certificates.server_cert,
+                                                   .key_file = certificates.server_key,
+                                                   .ca_file = certificates.ca_cert,
+                                                   .require_client_certificate = true};
+    return options;
+  }
+  std::string StoreUrl() const override {
+    const TestCertificates& certificates = GetTestCertificates();
+    return absl::StrCat(redis_->url(), "&cert=", certificates.client_cert,
+                        "&key=", certificates.client_key);
+  }
+};
+
+TEST_F(ReplicasOverTlsTest, SubmitOnAFetchOnBGivesTheSingleProcessBits) {
+  StartReplicas(2);
+  const v1::Mesh mesh = ToWire(TetBlock(6, 0.3));
+  const remote::SmoothJobOptions job;
+  absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, job);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  std::vector<v1::ProgressEvent> events;
+  ASSERT_TRUE(replicas_[1]
+                  .client
+                  ->WatchJob(submitted->job_id(),
+                             [&](const v1::ProgressEvent& event) { events.push_back(event); })
+                  .ok());
+  ASSERT_FALSE(events.empty());
+  EXPECT_TRUE(events.back().final());
+  absl::StatusOr<remote::RemoteSmoothResult> result =
+      replicas_[1].client->GetResult(submitted->job_id());
+  ASSERT_TRUE(result.ok()) << result.status();
+  ExpectSameCoordinates(SingleProcessResult(mesh, job), result->mesh);
+  ExpectStoreIdle();
+}
+
+TEST_F(ReplicasOverTlsTest, AReplicaThatDoesNotTrustTheStoresCertificateRefusesToStart) {
+  const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-untrusted-", getpid());
+  const TestCertificates& certificates = GetTestCertificates();
+  const std::string url = absl::StrCat(
+      "rediss://:s3cret@127.0.0.1:", redis_->port(), "/0?cacert=", certificates.other_ca_cert,
+      "&cert=", certificates.client_cert, "&key=", certificates.client_key);
+  ServerProcess server = SpawnServer(log, {absl::StrCat("--job_store=", url)});
+  EXPECT_EQ(WaitForExit(server.pid, absl::Seconds(20)), 1);
+  // The log names the store without its password, and why the handshake failed.
+  const std::string text = ReadFile(log);
+  EXPECT_NE(text.find(absl::StrCat(
+                "--job_store: redis: TLS handshake with rediss://:***@127.0.0.1:", redis_->port(),
+                "/0 failed: certificate verify failed")),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("s3cret"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -244,6 +244,21 @@ TEST(LimitsTest, InconsistentLimitsAreRefusedAtStart) {
   options.max_job_time = absl::ZeroDuration();
   EXPECT_EQ(SmootherServer::Start(options).status().message(),
             "--max_job_time = 0 must be positive");
+  // A lease renewed every lease/3 must outlast a scheduling hiccup; checked before the store is
+  // dialled, so no Redis is needed to see it refused.
+  options = TestOptions();
+  options.job_lease = absl::Milliseconds(99);
+  options.job_store = "redis://127.0.0.1:1";
+  EXPECT_EQ(SmootherServer::Start(options).status(),
+            absl::InvalidArgumentError("--job_lease = 99ms must be at least 100ms"));
+  options.job_lease = absl::Milliseconds(100);  // the least allowed: on to dialling the store
+  EXPECT_EQ(SmootherServer::Start(options).status(),
+            absl::UnavailableError("--job_store: redis: cannot connect to redis://127.0.0.1:1/0: "
+                                   "Connection refused"));
+  options = TestOptions();
+  options.result_ttl = absl::ZeroDuration();
+  EXPECT_EQ(SmootherServer::Start(options).status(),
+            absl::InvalidArgumentError("--result_ttl = 0 must be positive"));
 }
 
 TEST(ClientHostTest, DropsThePortOfIpPeers) {
