@@ -4,7 +4,8 @@
 What can be checked here, is:
   * the Dockerfile's build stage runs scripts/setup.sh and scripts/build.sh (the README's way),
     and both stages start from debian:bookworm-slim;
-  * every shared library that `ldd` reports for the binaries the runtime stage copies is provided
+  * every shared library that `ldd` reports for the binaries the runtime stage copies, and every
+    library the CLI opens at run time for a file format (RuntimeLibrary::Open in client/), is provided
     by a Debian package (`dpkg -S` on this machine) that the runtime stage installs, directly or
     as a dependency apt pulls in (`apt-cache depends --recurse`): the format libraries bring
     HDF5, netCDF and their own dependencies, which the Dockerfile need not spell out;
@@ -122,6 +123,30 @@ def shared_libraries(binary):
     return libraries
 
 
+def runtime_loaded_libraries(repo):
+    """The libraries the CLI opens with dlopen when a format needs them
+    (client/formats/runtime_library.h), with their own dependencies: `ldd` cannot see them, so
+    their sonames are read from the sources and resolved through the loader's cache."""
+    sonames = set()
+    for root, _, files in os.walk(os.path.join(repo, "client")):
+        for name in files:
+            if name.endswith(".cc"):
+                with open(os.path.join(root, name), encoding="utf-8") as f:
+                    sonames.update(re.findall(r'RuntimeLibrary::Open\(\s*"([^"]+)"', f.read()))
+    check(len(sonames) >= 2, f"the CLI opens {len(sonames)} format libraries at run time "
+                             f"({', '.join(sorted(sonames))})")
+    cache = subprocess.run(["/sbin/ldconfig", "-p"], capture_output=True, text=True,
+                           check=True).stdout
+    libraries = []
+    for soname in sorted(sonames):
+        match = re.search(rf"^\s*{re.escape(soname)} \(libc6,x86-64\) => (\S+)", cache, re.M)
+        check(match, f"{soname} is installed on this machine")
+        if match:
+            libraries.append(match.group(1))
+            libraries.extend(shared_libraries(match.group(1)))
+    return libraries
+
+
 def main(argv):
     sanitizer_build = "--sanitizer-build" in argv
     args = [a for a in argv if a != "--sanitizer-build"]
@@ -144,7 +169,10 @@ def main(argv):
         name = os.path.basename(binary)
         check(f"/src/build/bin/{name}" in copied, f"the runtime stage copies build/bin/{name}")
         needed = {}
-        for library, package in owning_packages(shared_libraries(binary)).items():
+        libraries = shared_libraries(binary)
+        if name == "getme":
+            libraries += runtime_loaded_libraries(repo)
+        for library, package in owning_packages(libraries).items():
             if not (sanitizer_build and package in SANITIZER_PACKAGES):
                 needed.setdefault(package, []).append(library)
         for package, libraries in sorted(needed.items(), key=lambda item: str(item[0])):

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "absl/strings/str_cat.h"
+#include "formats/cgns/cgns_functions.h"
 #include "formats/vtk_cell_type.h"
 #include "getme/elements/node_orders.h"
 
@@ -44,7 +45,7 @@ int CgnsPosition(int vtk_type, int vtk_position) {
 
 std::string CgnsTypeName(int cgns_type) {
   if (cgns_type >= 0 && cgns_type < NofValidElementTypes) {
-    return cg_ElementTypeName(static_cast<CGNS_ENUMT(ElementType_t)>(cgns_type));
+    return Cgns().cg_ElementTypeName(static_cast<CGNS_ENUMT(ElementType_t)>(cgns_type));
   }
   return absl::StrCat("element type ", cgns_type);
 }

@@ -14,6 +14,7 @@
 
 #include "absl/strings/match.h"
 #include "absl/strings/str_cat.h"
+#include "formats/cgns/cgns_functions.h"
 
 namespace getme::formats::cgns {
 
@@ -23,7 +24,7 @@ std::mutex& LibraryMutex() {
 }
 
 absl::Status LibraryError(absl::StatusCode status_code, absl::string_view what) {
-  return absl::Status(status_code, absl::StrCat(what, ": ", cg_get_error()));
+  return absl::Status(status_code, absl::StrCat(what, ": ", Cgns().cg_get_error()));
 }
 
 namespace {
@@ -69,6 +70,7 @@ absl::Status CheckSignature(const std::string& path) {
 }  // namespace
 
 absl::StatusOr<OpenFile> OpenFile::Open(const std::string& path, int mode) {
+  if (absl::Status status = LoadCgnsFunctions(); !status.ok()) return status;
   if (mode == CG_MODE_READ) {
     struct stat info {};
     if (stat(path.c_str(), &info) != 0) {
@@ -78,12 +80,12 @@ absl::StatusOr<OpenFile> OpenFile::Open(const std::string& path, int mode) {
       return absl::InvalidArgumentError(absl::StrCat("'", path, "' is a directory"));
     }
     if (absl::Status status = CheckSignature(path); !status.ok()) return status;
-  } else if (cg_set_file_type(CG_FILE_HDF5) != CG_OK) {
+  } else if (Cgns().cg_set_file_type(CG_FILE_HDF5) != CG_OK) {
     // The file type is a library global: set it for every write, whatever an earlier call set.
     return LibraryError(absl::StatusCode::kInternal, "cg_set_file_type(HDF5)");
   }
   int handle = -1;
-  if (cg_open(path.c_str(), mode, &handle) != CG_OK) {
+  if (Cgns().cg_open(path.c_str(), mode, &handle) != CG_OK) {
     return LibraryError(
         mode == CG_MODE_READ ? absl::StatusCode::kInvalidArgument : absl::StatusCode::kInternal,
         mode == CG_MODE_READ ? "not a file the CGNS library opens (cg_open)"
@@ -95,7 +97,7 @@ absl::StatusOr<OpenFile> OpenFile::Open(const std::string& path, int mode) {
 absl::Status OpenFile::Close() {
   const int handle = handle_;
   handle_ = -1;
-  if (handle >= 0 && cg_close(handle) != CG_OK) {
+  if (handle >= 0 && Cgns().cg_close(handle) != CG_OK) {
     return LibraryError(absl::StatusCode::kInternal, "cg_close");
   }
   return absl::OkStatus();
@@ -103,7 +105,7 @@ absl::Status OpenFile::Close() {
 
 OpenFile::~OpenFile() {
   // Only on a path that already failed: its error is the one reported, not cg_close's.
-  if (handle_ >= 0) cg_close(handle_);
+  if (handle_ >= 0) Cgns().cg_close(handle_);
 }
 
 absl::StatusOr<TemporaryFile> TemporaryFile::Create() {

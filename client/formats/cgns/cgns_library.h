@@ -20,8 +20,9 @@ absl::Status LibraryError(absl::StatusCode status_code, absl::string_view what);
 // An open CGNS file, closed (cg_close) when it goes out of scope.
 class OpenFile {
  public:
-  // mode: CG_MODE_READ or CG_MODE_WRITE. InvalidArgument with the library's text when the file
-  // is not one the library can open (cg_open), NotFound when it does not exist (read).
+  // mode: CG_MODE_READ or CG_MODE_WRITE. Loads the library first (cgns_functions.h):
+  // FailedPrecondition when it is not installed. InvalidArgument with the library's text when the
+  // file is not one the library can open (cg_open), NotFound when it does not exist (read).
   static absl::StatusOr<OpenFile> Open(const std::string& path, int mode);
   OpenFile(OpenFile&& other) noexcept : handle_(other.handle_) { other.handle_ = -1; }
   OpenFile& operator=(OpenFile&&) = delete;

@@ -19,6 +19,7 @@
 #include "absl/strings/str_join.h"
 #include "formats/cgns/cgns_element_type.h"
 #include "formats/cgns/cgns_extras.h"
+#include "formats/cgns/cgns_functions.h"
 #include "formats/cgns/cgns_library.h"
 #include "formats/vtk_cell_type.h"
 #include "spdlog/spdlog.h"
@@ -26,6 +27,7 @@
 namespace getme::formats {
 namespace {
 
+using cgns::Cgns;
 using cgns::CgnsPosition;
 using cgns::CgnsTypeName;
 using cgns::ElementKind;
@@ -69,7 +71,7 @@ class ZoneReader {
   absl::Status Read() {
     cgsize_t size[3] = {0, 0, 0};
     Name name{};
-    if (cg_zone_read(file_, base_, zone_, name, size) != CG_OK) {
+    if (Cgns().cg_zone_read(file_, base_, zone_, name, size) != CG_OK) {
       return Malformed(absl::StrCat(zone_label_, ": cg_zone_read"));
     }
     if (size[0] <= 0) {
@@ -89,7 +91,7 @@ class ZoneReader {
  private:
   absl::Status ReadCoordinates() {
     int count = 0;
-    if (cg_ncoords(file_, base_, zone_, &count) != CG_OK) {
+    if (Cgns().cg_ncoords(file_, base_, zone_, &count) != CG_OK) {
       return Malformed(absl::StrCat(zone_label_, ": cg_ncoords"));
     }
     bool all_single = true;
@@ -97,7 +99,7 @@ class ZoneReader {
     for (int c = 1; c <= count; ++c) {
       CGNS_ENUMT(DataType_t) type{};
       Name name{};
-      if (cg_coord_info(file_, base_, zone_, c, &type, name) != CG_OK) {
+      if (Cgns().cg_coord_info(file_, base_, zone_, c, &type, name) != CG_OK) {
         return Malformed(absl::StrCat(zone_label_, ": coordinate ", c, ": cg_coord_info"));
       }
       for (int axis = 0; axis < 3; ++axis) {
@@ -126,8 +128,8 @@ class ZoneReader {
     for (int axis = 0; axis < 3; ++axis) {
       cgsize_t range_min = 1;
       cgsize_t range_max = static_cast<cgsize_t>(n);
-      if (cg_coord_read(file_, base_, zone_, kAxes[axis], CGNS_ENUMV(RealDouble), &range_min,
-                        &range_max, values.data()) != CG_OK) {
+      if (Cgns().cg_coord_read(file_, base_, zone_, kAxes[axis], CGNS_ENUMV(RealDouble), &range_min,
+                               &range_max, values.data()) != CG_OK) {
         return Malformed(absl::StrCat(zone_label_, ": ", kAxes[axis], ": cg_coord_read"));
       }
       for (std::int64_t i = 0; i < n; ++i) points.reals[3 * i + axis] = values[i];
@@ -137,7 +139,7 @@ class ZoneReader {
 
   absl::Status ReadSections() {
     int count = 0;
-    if (cg_nsections(file_, base_, zone_, &count) != CG_OK) {
+    if (Cgns().cg_nsections(file_, base_, zone_, &count) != CG_OK) {
       return Malformed(absl::StrCat(zone_label_, ": cg_nsections"));
     }
     if (count == 0) {
@@ -164,8 +166,8 @@ class ZoneReader {
     cgsize_t end = 0;
     int boundary_count = 0;
     int parent_flag = 0;
-    if (cg_section_read(file_, base_, zone_, s, name, &type, &start, &end, &boundary_count,
-                        &parent_flag) != CG_OK) {
+    if (Cgns().cg_section_read(file_, base_, zone_, s, name, &type, &start, &end, &boundary_count,
+                               &parent_flag) != CG_OK) {
       return Malformed(absl::StrCat(zone_label_, ": section ", s, ": cg_section_read"));
     }
     const std::string label = absl::StrCat(zone_label_, " section '", name, "'");
@@ -187,7 +189,7 @@ class ZoneReader {
       return UnsupportedType(label, type);
     }
     cgsize_t data_size = 0;
-    if (cg_ElementDataSize(file_, base_, zone_, s, &data_size) != CG_OK) {
+    if (Cgns().cg_ElementDataSize(file_, base_, zone_, s, &data_size) != CG_OK) {
       return Malformed(absl::StrCat(label, ": cg_ElementDataSize"));
     }
     if (!mixed && data_size != element_count * kind->node_count) {
@@ -210,11 +212,12 @@ class ZoneReader {
     std::vector<cgsize_t> offsets;
     if (mixed) {
       offsets.resize(static_cast<std::size_t>(element_count + 1));
-      if (cg_poly_elements_read(file_, base_, zone_, s, connectivity.data(), offsets.data(),
-                                nullptr) != CG_OK) {
+      if (Cgns().cg_poly_elements_read(file_, base_, zone_, s, connectivity.data(), offsets.data(),
+                                       nullptr) != CG_OK) {
         return Malformed(absl::StrCat(label, ": cg_poly_elements_read"));
       }
-    } else if (cg_elements_read(file_, base_, zone_, s, connectivity.data(), nullptr) != CG_OK) {
+    } else if (Cgns().cg_elements_read(file_, base_, zone_, s, connectivity.data(), nullptr) !=
+               CG_OK) {
       return Malformed(absl::StrCat(label, ": cg_elements_read"));
     }
     ranges_.push_back({start, end, document_.grid.cells.size()});
@@ -288,7 +291,7 @@ class ZoneReader {
     std::sort(sorted_ranges_.begin(), sorted_ranges_.end(),
               [](const SectionRange& a, const SectionRange& b) { return a.start < b.start; });
     int count = 0;
-    if (cg_nbocos(file_, base_, zone_, &count) != CG_OK) {
+    if (Cgns().cg_nbocos(file_, base_, zone_, &count) != CG_OK) {
       return Malformed(absl::StrCat(zone_label_, ": cg_nbocos"));
     }
     const std::int64_t cell_count = document_.grid.cells.size();
@@ -302,13 +305,13 @@ class ZoneReader {
       cgsize_t normal_size = 0;
       CGNS_ENUMT(DataType_t) normal_type{};
       int datasets = 0;
-      if (cg_boco_info(file_, base_, zone_, bc, name, &bc_type, &set_type, &point_count,
-                       normal_index, &normal_size, &normal_type, &datasets) != CG_OK) {
+      if (Cgns().cg_boco_info(file_, base_, zone_, bc, name, &bc_type, &set_type, &point_count,
+                              normal_index, &normal_size, &normal_type, &datasets) != CG_OK) {
         return Malformed(absl::StrCat(zone_label_, ": boundary condition ", bc, ": cg_boco_info"));
       }
       const std::string label = absl::StrCat(zone_label_, " boundary condition '", name, "'");
       CGNS_ENUMT(GridLocation_t) location{};
-      if (cg_boco_gridlocation_read(file_, base_, zone_, bc, &location) != CG_OK) {
+      if (Cgns().cg_boco_gridlocation_read(file_, base_, zone_, bc, &location) != CG_OK) {
         return Malformed(absl::StrCat(label, ": cg_boco_gridlocation_read"));
       }
       const bool is_range =
@@ -316,14 +319,14 @@ class ZoneReader {
       const bool is_list = set_type == CGNS_ENUMV(PointList) || set_type == CGNS_ENUMV(ElementList);
       if (!is_range && !is_list) {
         return absl::InvalidArgumentError(
-            absl::StrCat(label, ": point set type ", cg_PointSetTypeName(set_type),
+            absl::StrCat(label, ": point set type ", Cgns().cg_PointSetTypeName(set_type),
                          " is not supported (PointList, PointRange, ElementList, ElementRange)"));
       }
       // The library's own writer refuses an empty point set (cg_boco_write: "Invalid input:
       // npoint=0"), so getme could not write such a condition back either.
       if (point_count <= 0 || (is_range && point_count != 2)) {
-        return absl::InvalidArgumentError(
-            absl::StrCat(label, ": ", point_count, " values in a ", cg_PointSetTypeName(set_type)));
+        return absl::InvalidArgumentError(absl::StrCat(label, ": ", point_count, " values in a ",
+                                                       Cgns().cg_PointSetTypeName(set_type)));
       }
       if (absl::Status status = CheckSize(label, "points", point_count, sizeof(cgsize_t));
           !status.ok()) {
@@ -331,7 +334,7 @@ class ZoneReader {
       }
       std::vector<cgsize_t> points(static_cast<std::size_t>(point_count));
       // The normals, if any, are not wanted: the library skips them for a null pointer.
-      if (cg_boco_read(file_, base_, zone_, bc, points.data(), nullptr) != CG_OK) {
+      if (Cgns().cg_boco_read(file_, base_, zone_, bc, points.data(), nullptr) != CG_OK) {
         return Malformed(absl::StrCat(label, ": cg_boco_read"));
       }
       std::vector<std::int64_t> members;
@@ -398,11 +401,11 @@ class ZoneReader {
   }
 
   absl::Status ReadFamilyName(int bc, absl::string_view label, std::string* family) {
-    if (cg_goto(file_, base_, "Zone_t", zone_, "ZoneBC_t", 1, "BC_t", bc, "end") != CG_OK) {
+    if (Cgns().cg_goto(file_, base_, "Zone_t", zone_, "ZoneBC_t", 1, "BC_t", bc, "end") != CG_OK) {
       return Malformed(absl::StrCat(label, ": cg_goto"));
     }
     Name name{};
-    const int result = cg_famname_read(name);
+    const int result = Cgns().cg_famname_read(name);
     if (result == CG_NODE_NOT_FOUND) return absl::OkStatus();
     if (result != CG_OK) return Malformed(absl::StrCat(label, ": FamilyName: cg_famname_read"));
     *family = name;
@@ -411,29 +414,29 @@ class ZoneReader {
 
   absl::Status ReadVertexSolutions() {
     int count = 0;
-    if (cg_nsols(file_, base_, zone_, &count) != CG_OK) {
+    if (Cgns().cg_nsols(file_, base_, zone_, &count) != CG_OK) {
       return Malformed(absl::StrCat(zone_label_, ": cg_nsols"));
     }
     for (int s = 1; s <= count; ++s) {
       Name name{};
       CGNS_ENUMT(GridLocation_t) location{};
-      if (cg_sol_info(file_, base_, zone_, s, name, &location) != CG_OK) {
+      if (Cgns().cg_sol_info(file_, base_, zone_, s, name, &location) != CG_OK) {
         return Malformed(absl::StrCat(zone_label_, ": solution ", s, ": cg_sol_info"));
       }
       const std::string label = absl::StrCat(zone_label_, " FlowSolution '", name, "'");
       if (location != CGNS_ENUMV(Vertex)) {
         spdlog::warn("{}: GridLocation {} not read (only vertex solutions become point arrays)",
-                     label, cg_GridLocationName(location));
+                     label, Cgns().cg_GridLocationName(location));
         continue;
       }
       int field_count = 0;
-      if (cg_nfields(file_, base_, zone_, s, &field_count) != CG_OK) {
+      if (Cgns().cg_nfields(file_, base_, zone_, s, &field_count) != CG_OK) {
         return Malformed(absl::StrCat(label, ": cg_nfields"));
       }
       for (int f = 1; f <= field_count; ++f) {
         CGNS_ENUMT(DataType_t) type{};
         Name field{};
-        if (cg_field_info(file_, base_, zone_, s, f, &type, field) != CG_OK) {
+        if (Cgns().cg_field_info(file_, base_, zone_, s, f, &type, field) != CG_OK) {
           return Malformed(absl::StrCat(label, ": field ", f, ": cg_field_info"));
         }
         const bool integer = type == CGNS_ENUMV(Integer) || type == CGNS_ENUMV(LongInteger);
@@ -446,15 +449,15 @@ class ZoneReader {
         cgsize_t range_max = static_cast<cgsize_t>(vertex_count_);
         if (integer) {
           std::vector<cglong_t> values(static_cast<std::size_t>(vertex_count_));
-          if (cg_field_read(file_, base_, zone_, s, field, CGNS_ENUMV(LongInteger), &range_min,
-                            &range_max, values.data()) != CG_OK) {
+          if (Cgns().cg_field_read(file_, base_, zone_, s, field, CGNS_ENUMV(LongInteger),
+                                   &range_min, &range_max, values.data()) != CG_OK) {
             return Malformed(absl::StrCat(label, " field '", field, "': cg_field_read"));
           }
           array.integers.assign(values.begin(), values.end());
         } else {
           array.reals.resize(static_cast<std::size_t>(vertex_count_));
-          if (cg_field_read(file_, base_, zone_, s, field, CGNS_ENUMV(RealDouble), &range_min,
-                            &range_max, array.reals.data()) != CG_OK) {
+          if (Cgns().cg_field_read(file_, base_, zone_, s, field, CGNS_ENUMV(RealDouble),
+                                   &range_min, &range_max, array.reals.data()) != CG_OK) {
             return Malformed(absl::StrCat(label, " field '", field, "': cg_field_read"));
           }
         }
@@ -485,7 +488,7 @@ class ZoneReader {
 
 absl::Status ReadFamilies(int file, int base, absl::string_view base_label, CgnsExtras* extras) {
   int count = 0;
-  if (cg_nfamilies(file, base, &count) != CG_OK) {
+  if (Cgns().cg_nfamilies(file, base, &count) != CG_OK) {
     return Malformed(absl::StrCat(base_label, ": cg_nfamilies"));
   }
   for (int f = 1; f <= count; ++f) {
@@ -493,14 +496,14 @@ absl::Status ReadFamilies(int file, int base, absl::string_view base_label, Cgns
     Name name{};
     int bc_count = 0;
     int geometry_count = 0;
-    if (cg_family_read(file, base, f, name, &bc_count, &geometry_count) != CG_OK) {
+    if (Cgns().cg_family_read(file, base, f, name, &bc_count, &geometry_count) != CG_OK) {
       return Malformed(absl::StrCat(base_label, ": family ", f, ": cg_family_read"));
     }
     family.name = name;
     if (bc_count > 0) {
       Name bc_name{};
       CGNS_ENUMT(BCType_t) bc_type{};
-      if (cg_fambc_read(file, base, f, 1, bc_name, &bc_type) != CG_OK) {
+      if (Cgns().cg_fambc_read(file, base, f, 1, bc_name, &bc_type) != CG_OK) {
         return Malformed(absl::StrCat(base_label, " family '", name, "': cg_fambc_read"));
       }
       family.has_bc = true;
@@ -517,18 +520,18 @@ absl::StatusOr<MeshDocument> ReadOpenFile(int file, std::int64_t file_bytes) {
   document.as_read.encoding = Encoding::kBinary;
   CgnsExtras& extras = document.cgns.emplace();
   int file_type = CG_FILE_NONE;
-  if (cg_get_file_type(file, &file_type) != CG_OK) return Malformed("cg_get_file_type");
+  if (Cgns().cg_get_file_type(file, &file_type) != CG_OK) return Malformed("cg_get_file_type");
   extras.file_type = file_type == CG_FILE_HDF5 ? "HDF5" : "ADF";
 
   int base_count = 0;
-  if (cg_nbases(file, &base_count) != CG_OK) return Malformed("cg_nbases");
+  if (Cgns().cg_nbases(file, &base_count) != CG_OK) return Malformed("cg_nbases");
   std::vector<std::string> bases;
   std::vector<int> volume_bases;
   for (int b = 1; b <= base_count; ++b) {
     Name name{};
     int cell_dimension = 0;
     int physical_dimension = 0;
-    if (cg_base_read(file, b, name, &cell_dimension, &physical_dimension) != CG_OK) {
+    if (Cgns().cg_base_read(file, b, name, &cell_dimension, &physical_dimension) != CG_OK) {
       return Malformed(absl::StrCat("base ", b, ": cg_base_read"));
     }
     bases.push_back(absl::StrCat("'", name, "' (cell dimension ", cell_dimension, ")"));
@@ -548,14 +551,14 @@ absl::StatusOr<MeshDocument> ReadOpenFile(int file, std::int64_t file_bytes) {
   Name base_name{};
   int cell_dimension = 0;
   int physical_dimension = 0;
-  if (cg_base_read(file, base, base_name, &cell_dimension, &physical_dimension) != CG_OK) {
+  if (Cgns().cg_base_read(file, base, base_name, &cell_dimension, &physical_dimension) != CG_OK) {
     return Malformed("cg_base_read");
   }
   extras.base_name = base_name;
   const std::string base_label = absl::StrCat("base '", base_name, "'");
 
   int zone_count = 0;
-  if (cg_nzones(file, base, &zone_count) != CG_OK) {
+  if (Cgns().cg_nzones(file, base, &zone_count) != CG_OK) {
     return Malformed(absl::StrCat(base_label, ": cg_nzones"));
   }
   std::vector<std::string> zones;
@@ -563,7 +566,7 @@ absl::StatusOr<MeshDocument> ReadOpenFile(int file, std::int64_t file_bytes) {
   for (int z = 1; z <= zone_count; ++z) {
     Name name{};
     cgsize_t size[9] = {};  // a structured zone's three index ranges
-    if (cg_zone_read(file, base, z, name, size) != CG_OK) {
+    if (Cgns().cg_zone_read(file, base, z, name, size) != CG_OK) {
       return Malformed(absl::StrCat(base_label, ": zone ", z, ": cg_zone_read"));
     }
     if (z == 1) first_zone_name = name;
@@ -579,12 +582,13 @@ absl::StatusOr<MeshDocument> ReadOpenFile(int file, std::int64_t file_bytes) {
         "nodes would need the zone connectivity); merge them first"));
   }
   CGNS_ENUMT(ZoneType_t) zone_type{};
-  if (cg_zone_type(file, base, 1, &zone_type) != CG_OK) {
+  if (Cgns().cg_zone_type(file, base, 1, &zone_type) != CG_OK) {
     return Malformed(absl::StrCat(base_label, " zone ", zones[0], ": cg_zone_type"));
   }
   const std::string zone_label = absl::StrCat("zone ", zones[0]);
   if (zone_type != CGNS_ENUMV(Unstructured)) {
-    return absl::InvalidArgumentError(absl::StrCat(zone_label, " is ", cg_ZoneTypeName(zone_type),
+    return absl::InvalidArgumentError(absl::StrCat(zone_label, " is ",
+                                                   Cgns().cg_ZoneTypeName(zone_type),
                                                    "; getme reads unstructured zones only"));
   }
   extras.zone_name = first_zone_name;

@@ -18,6 +18,7 @@
 #include "absl/strings/str_join.h"
 #include "formats/cgns/cgns_element_type.h"
 #include "formats/cgns/cgns_extras.h"
+#include "formats/cgns/cgns_functions.h"
 #include "formats/cgns/cgns_library.h"
 #include "formats/file_io.h"
 #include "formats/vtk_cell_type.h"
@@ -26,6 +27,7 @@
 namespace getme::formats {
 namespace {
 
+using cgns::Cgns;
 using cgns::CgnsPosition;
 using cgns::ElementKind;
 using cgns::KindOfVtkType;
@@ -70,26 +72,26 @@ class Writer {
     if (absl::Status status = Plan(); !status.ok()) return status;
     const CgnsExtras defaults;
     const CgnsExtras& extras = document_.cgns.has_value() ? *document_.cgns : defaults;
-    if (cg_base_write(file_, CgnsName(extras.base_name).c_str(), 3, 3, &base_) != CG_OK) {
+    if (Cgns().cg_base_write(file_, CgnsName(extras.base_name).c_str(), 3, 3, &base_) != CG_OK) {
       return Failed("cg_base_write");
     }
     cgsize_t size[3] = {static_cast<cgsize_t>(grid().point_count()),
                         static_cast<cgsize_t>(volume_count_), 0};
-    if (cg_zone_write(file_, base_, CgnsName(extras.zone_name).c_str(), size,
-                      CGNS_ENUMV(Unstructured), &zone_) != CG_OK) {
+    if (Cgns().cg_zone_write(file_, base_, CgnsName(extras.zone_name).c_str(), size,
+                             CGNS_ENUMV(Unstructured), &zone_) != CG_OK) {
       return Failed("cg_zone_write");
     }
     if (absl::Status status = WriteCoordinates(); !status.ok()) return status;
     if (absl::Status status = WriteSections(); !status.ok()) return status;
     for (const CgnsFamily& family : extras.families) {
       int index = 0;
-      if (cg_family_write(file_, base_, CgnsName(family.name).c_str(), &index) != CG_OK) {
+      if (Cgns().cg_family_write(file_, base_, CgnsName(family.name).c_str(), &index) != CG_OK) {
         return Failed(absl::StrCat("family '", family.name, "': cg_family_write"));
       }
       int bc = 0;
       if (family.has_bc &&
-          cg_fambc_write(file_, base_, index, "FamBC",
-                         static_cast<CGNS_ENUMT(BCType_t)>(family.bc_type), &bc) != CG_OK) {
+          Cgns().cg_fambc_write(file_, base_, index, "FamBC",
+                                static_cast<CGNS_ENUMT(BCType_t)>(family.bc_type), &bc) != CG_OK) {
         return Failed(absl::StrCat("family '", family.name, "': cg_fambc_write"));
       }
     }
@@ -281,8 +283,8 @@ class Writer {
     for (int axis = 0; axis < 3; ++axis) {
       for (std::int64_t i = 0; i < n; ++i) values[i] = grid().points.reals[3 * i + axis];
       int index = 0;
-      if (cg_coord_write(file_, base_, zone_, CGNS_ENUMV(RealDouble), kAxes[axis], values.data(),
-                         &index) != CG_OK) {
+      if (Cgns().cg_coord_write(file_, base_, zone_, CGNS_ENUMV(RealDouble), kAxes[axis],
+                                values.data(), &index) != CG_OK) {
         return Failed(absl::StrCat(kAxes[axis], ": cg_coord_write"));
       }
     }
@@ -309,11 +311,12 @@ class Writer {
       int index = 0;
       const int result =
           section.mixed
-              ? cg_poly_section_write(file_, base_, zone_, section.name.c_str(), CGNS_ENUMV(MIXED),
-                                      start, end, 0, connectivity.data(), offsets.data(), &index)
-              : cg_section_write(file_, base_, zone_, section.name.c_str(),
-                                 static_cast<CGNS_ENUMT(ElementType_t)>(section.cgns_type), start,
-                                 end, 0, connectivity.data(), &index);
+              ? Cgns().cg_poly_section_write(file_, base_, zone_, section.name.c_str(),
+                                             CGNS_ENUMV(MIXED), start, end, 0, connectivity.data(),
+                                             offsets.data(), &index)
+              : Cgns().cg_section_write(file_, base_, zone_, section.name.c_str(),
+                                        static_cast<CGNS_ENUMT(ElementType_t)>(section.cgns_type),
+                                        start, end, 0, connectivity.data(), &index);
       if (result != CG_OK) {
         return Failed(absl::StrCat("section '", section.name, "': cg_section_write"));
       }
@@ -337,18 +340,21 @@ class Writer {
       if (contiguous) range = {condition.members.front(), condition.members.back()};
       const std::vector<cgsize_t>& points = contiguous ? range : condition.members;
       int index = 0;
-      if (cg_boco_write(file_, base_, zone_, condition.name.c_str(),
-                        static_cast<CGNS_ENUMT(BCType_t)>(condition.bc_type),
-                        contiguous ? CGNS_ENUMV(PointRange) : CGNS_ENUMV(PointList),
-                        static_cast<cgsize_t>(points.size()), points.data(), &index) != CG_OK) {
+      if (Cgns().cg_boco_write(file_, base_, zone_, condition.name.c_str(),
+                               static_cast<CGNS_ENUMT(BCType_t)>(condition.bc_type),
+                               contiguous ? CGNS_ENUMV(PointRange) : CGNS_ENUMV(PointList),
+                               static_cast<cgsize_t>(points.size()), points.data(),
+                               &index) != CG_OK) {
         return Failed(absl::StrCat(label, ": cg_boco_write"));
       }
-      if (cg_boco_gridlocation_write(file_, base_, zone_, index, condition.location) != CG_OK) {
+      if (Cgns().cg_boco_gridlocation_write(file_, base_, zone_, index, condition.location) !=
+          CG_OK) {
         return Failed(absl::StrCat(label, ": cg_boco_gridlocation_write"));
       }
       if (!condition.family.empty()) {
-        if (cg_goto(file_, base_, "Zone_t", zone_, "ZoneBC_t", 1, "BC_t", index, "end") != CG_OK ||
-            cg_famname_write(CgnsName(condition.family).c_str()) != CG_OK) {
+        if (Cgns().cg_goto(file_, base_, "Zone_t", zone_, "ZoneBC_t", 1, "BC_t", index, "end") !=
+                CG_OK ||
+            Cgns().cg_famname_write(CgnsName(condition.family).c_str()) != CG_OK) {
           return Failed(absl::StrCat(label, ": FamilyName '", condition.family, "'"));
         }
       }
@@ -404,7 +410,7 @@ class Writer {
                              const std::vector<std::int64_t>& rows) {
     if (arrays.empty()) return absl::OkStatus();
     int solution = 0;
-    if (cg_sol_write(file_, base_, zone_, name, location, &solution) != CG_OK) {
+    if (Cgns().cg_sol_write(file_, base_, zone_, name, location, &solution) != CG_OK) {
       return Failed(absl::StrCat("FlowSolution '", name, "': cg_sol_write"));
     }
     for (const DataArray* array : arrays) {
@@ -421,17 +427,17 @@ class Writer {
         });
         if (fits) {
           std::vector<int> narrow(values.begin(), values.end());
-          result = cg_field_write(file_, base_, zone_, solution, CGNS_ENUMV(Integer),
-                                  CgnsName(array->name).c_str(), narrow.data(), &field);
+          result = Cgns().cg_field_write(file_, base_, zone_, solution, CGNS_ENUMV(Integer),
+                                         CgnsName(array->name).c_str(), narrow.data(), &field);
         } else {
-          result = cg_field_write(file_, base_, zone_, solution, CGNS_ENUMV(LongInteger),
-                                  CgnsName(array->name).c_str(), values.data(), &field);
+          result = Cgns().cg_field_write(file_, base_, zone_, solution, CGNS_ENUMV(LongInteger),
+                                         CgnsName(array->name).c_str(), values.data(), &field);
         }
       } else {
         std::vector<double> values(static_cast<std::size_t>(count));
         for (std::int64_t i = 0; i < count; ++i) values[i] = array->reals[row(i)];
-        result = cg_field_write(file_, base_, zone_, solution, CGNS_ENUMV(RealDouble),
-                                CgnsName(array->name).c_str(), values.data(), &field);
+        result = Cgns().cg_field_write(file_, base_, zone_, solution, CGNS_ENUMV(RealDouble),
+                                       CgnsName(array->name).c_str(), values.data(), &field);
       }
       if (result != CG_OK) {
         return Failed(

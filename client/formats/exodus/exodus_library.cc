@@ -1,7 +1,5 @@
 #include "formats/exodus/exodus_library.h"
 
-#include <exodusII.h>
-#include <netcdf.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "absl/strings/str_cat.h"
+#include "formats/exodus/exodus_functions.h"
 #include "formats/exodus/exodus_netcdf_header.h"
 
 namespace getme::formats {
@@ -39,13 +38,13 @@ constexpr TextLimit kTextAttributes[] = {{"title", MAX_LINE_LENGTH}, {"elem_type
 
 absl::Status CheckAttributes(int ncid, int variable, absl::string_view owner) {
   int count = 0;
-  if (nc_inq_varnatts(ncid, variable, &count) != NC_NOERR) return absl::OkStatus();
+  if (Exodus().nc_inq_varnatts(ncid, variable, &count) != NC_NOERR) return absl::OkStatus();
   for (int k = 0; k < count; ++k) {
     char name[NC_MAX_NAME + 1] = {};
     nc_type type = NC_NAT;
     std::size_t length = 0;
-    if (nc_inq_attname(ncid, variable, k, name) != NC_NOERR ||
-        nc_inq_att(ncid, variable, name, &type, &length) != NC_NOERR) {
+    if (Exodus().nc_inq_attname(ncid, variable, k, name) != NC_NOERR ||
+        Exodus().nc_inq_att(ncid, variable, name, &type, &length) != NC_NOERR) {
       continue;
     }
     for (const char* scalar : kScalarAttributes) {
@@ -70,17 +69,17 @@ absl::Status CheckAttributes(int ncid, int variable, absl::string_view owner) {
 // when it is fine or not netCDF at all (ex_open then says why it cannot open it).
 absl::Status CheckNetcdfHeader(const std::string& path) {
   int ncid = -1;
-  if (nc_open(path.c_str(), NC_NOWRITE, &ncid) != NC_NOERR) return absl::OkStatus();
+  if (Exodus().nc_open(path.c_str(), NC_NOWRITE, &ncid) != NC_NOERR) return absl::OkStatus();
   absl::Status status = CheckAttributes(ncid, NC_GLOBAL, "global");
   int variables = 0;
-  if (status.ok() && nc_inq_nvars(ncid, &variables) == NC_NOERR) {
+  if (status.ok() && Exodus().nc_inq_nvars(ncid, &variables) == NC_NOERR) {
     for (int variable = 0; variable < variables && status.ok(); ++variable) {
       char name[NC_MAX_NAME + 1] = {};
-      if (nc_inq_varname(ncid, variable, name) != NC_NOERR) continue;
+      if (Exodus().nc_inq_varname(ncid, variable, name) != NC_NOERR) continue;
       status = CheckAttributes(ncid, variable, absl::StrCat("variable '", name, "'"));
     }
   }
-  nc_close(ncid);
+  Exodus().nc_close(ncid);
   return status;
 }
 
@@ -88,28 +87,27 @@ absl::Status CheckNetcdfHeader(const std::string& path) {
 
 std::unique_lock<std::mutex> LockExodusLibrary() {
   static std::mutex mutex;
-  std::unique_lock<std::mutex> lock(mutex);
-  // Quiet: no messages on stderr (the status carries them), and never EX_ABORT (exit()).
-  ex_opts(0);
-  return lock;
+  return std::unique_lock<std::mutex>(mutex);
 }
 
 absl::Status ExodusError(absl::string_view context) {
   const char* message = nullptr;
   const char* function = nullptr;
   int code = 0;
-  ex_get_err(&message, &function, &code);
+  Exodus().ex_get_err(&message, &function, &code);
   std::string text = absl::StrCat(context, ": ");
   if (message != nullptr && *message != '\0') {
     absl::StrAppend(&text, message);
   } else {
     absl::StrAppend(&text, "the Exodus library reports an error");
   }
-  if (code != 0 && !IsExodusOwnCode(code)) absl::StrAppend(&text, " (", nc_strerror(code), ")");
+  if (code != 0 && !IsExodusOwnCode(code))
+    absl::StrAppend(&text, " (", Exodus().nc_strerror(code), ")");
   return absl::InvalidArgumentError(text);
 }
 
 absl::StatusOr<ExodusFile> ExodusFile::Open(const std::string& path) {
+  if (absl::Status status = LoadExodusFunctions(); !status.ok()) return status;
   std::error_code error;
   if (!std::filesystem::exists(path, error)) {
     return absl::NotFoundError(absl::StrCat("cannot open '", path, "': No such file or directory"));
@@ -122,24 +120,25 @@ absl::StatusOr<ExodusFile> ExodusFile::Open(const std::string& path) {
   int cpu_word_size = 8;  // the API hands out doubles, whatever the file stores
   int io_word_size = 0;
   float version = 0;
-  const int id = ex_open(path.c_str(), EX_READ, &cpu_word_size, &io_word_size, &version);
+  const int id = Exodus().ex_open(path.c_str(), EX_READ, &cpu_word_size, &io_word_size, &version);
   if (id < 0) return ExodusError("not an Exodus II file");
   ExodusFile file(id);
-  if (ex_set_int64_status(id, EX_ALL_INT64_API) < 0) {
+  if (Exodus().ex_set_int64_status(id, EX_ALL_INT64_API) < 0) {
     return ExodusError("cannot switch the Exodus API to 64-bit integers");
   }
   return file;
 }
 
 absl::StatusOr<ExodusFile> ExodusFile::Create(const std::string& path, bool int64_db) {
+  if (absl::Status status = LoadExodusFunctions(); !status.ok()) return status;
   int cpu_word_size = 8;
   int io_word_size = 8;
   int mode = EX_CLOBBER | EX_LARGE_MODEL;
   if (int64_db) mode |= EX_ALL_INT64_DB | EX_NETCDF4;  // netCDF-3 has no 64-bit integers
-  const int id = ex_create(path.c_str(), mode, &cpu_word_size, &io_word_size);
+  const int id = Exodus().ex_create(path.c_str(), mode, &cpu_word_size, &io_word_size);
   if (id < 0) return ExodusError(absl::StrCat("cannot create '", path, "'"));
   ExodusFile file(id);
-  if (ex_set_int64_status(id, EX_ALL_INT64_API) < 0) {
+  if (Exodus().ex_set_int64_status(id, EX_ALL_INT64_API) < 0) {
     return ExodusError("cannot switch the Exodus API to 64-bit integers");
   }
   return file;
@@ -149,12 +148,12 @@ absl::Status ExodusFile::Close() {
   if (id_ < 0) return absl::OkStatus();
   const int id = id_;
   id_ = -1;
-  if (ex_close(id) < 0) return ExodusError("cannot close the Exodus file");
+  if (Exodus().ex_close(id) < 0) return ExodusError("cannot close the Exodus file");
   return absl::OkStatus();
 }
 
 ExodusFile::~ExodusFile() {
-  if (id_ >= 0) ex_close(id_);
+  if (id_ >= 0) Exodus().ex_close(id_);
 }
 
 absl::StatusOr<TemporaryFile> TemporaryFile::Create(absl::string_view suffix) {

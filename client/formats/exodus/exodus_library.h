@@ -21,7 +21,8 @@ std::unique_lock<std::mutex> LockExodusLibrary();
 // Call right after a failing ex_* function, under the lock.
 absl::Status ExodusError(absl::string_view context);
 
-// An open Exodus file, closed on destruction. Open and create under the lock.
+// An open Exodus file, closed on destruction. Open and create under the lock; both load the
+// library first (exodus_functions.h), FailedPrecondition when it is not installed.
 class ExodusFile {
  public:
   // Opens for reading; NotFound for a missing path, InvalidArgument when the library refuses

@@ -13,6 +13,7 @@
 #include "absl/strings/str_join.h"
 #include "absl/strings/str_replace.h"
 #include "formats/exodus/exodus_element_types.h"
+#include "formats/exodus/exodus_functions.h"
 #include "formats/exodus/exodus_library.h"
 #include "formats/file_io.h"
 #include "formats/vtk_cell_type.h"
@@ -93,7 +94,7 @@ absl::StatusOr<std::vector<std::int64_t>> ExodusFileReader::Ids(ex_entity_type t
                                                                 std::int64_t count,
                                                                 absl::string_view what) {
   std::vector<std::int64_t> ids(static_cast<std::size_t>(count));
-  if (count > 0 && ex_get_ids(exoid_, type, ids.data()) < 0) {
+  if (count > 0 && Exodus().ex_get_ids(exoid_, type, ids.data()) < 0) {
     return ExodusError(absl::StrCat("cannot read the ", what, " ids"));
   }
   // The library finds blocks and sets by id, so a repeated id makes the later ones unreachable;
@@ -115,7 +116,7 @@ absl::StatusOr<std::vector<std::int64_t>> ExodusFileReader::Ids(ex_entity_type t
 absl::StatusOr<ExodusFileReader::SetCounts> ExodusFileReader::ReadSetCounts(
     ex_entity_type type, std::int64_t id, const std::string& where, absl::string_view entry_name) {
   SetCounts counts;
-  if (ex_get_set_param(exoid_, type, id, &counts.entries, &counts.factors) < 0) {
+  if (Exodus().ex_get_set_param(exoid_, type, id, &counts.entries, &counts.factors) < 0) {
     return ExodusError(where);
   }
   if (absl::Status status = CheckCount(counts.entries, absl::StrCat(where, ": ", entry_name));
@@ -135,12 +136,12 @@ absl::StatusOr<std::vector<std::string>> ExodusFileReader::Names(ex_entity_type 
                                                                  absl::string_view what) {
   std::vector<std::string> names(static_cast<std::size_t>(count));
   if (count == 0) return names;
-  const int length = static_cast<int>(ex_inquire_int(exoid_, EX_INQ_MAX_READ_NAME_LENGTH));
+  const int length = static_cast<int>(Exodus().ex_inquire_int(exoid_, EX_INQ_MAX_READ_NAME_LENGTH));
   std::vector<std::vector<char>> buffers(names.size(),
                                          std::vector<char>(std::max(length, 0) + 1, '\0'));
   std::vector<char*> pointers;
   for (std::vector<char>& buffer : buffers) pointers.push_back(buffer.data());
-  if (ex_get_names(exoid_, type, pointers.data()) < 0) {
+  if (Exodus().ex_get_names(exoid_, type, pointers.data()) < 0) {
     return ExodusError(absl::StrCat("cannot read the ", what, " names"));
   }
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -154,7 +155,7 @@ absl::StatusOr<std::vector<std::string>> ExodusFileReader::Names(ex_entity_type 
 absl::Status ExodusFileReader::ReadCoordinates() {
   const std::int64_t count = init_.num_nodes;
   std::vector<double> x(count), y(count), z(count);
-  if (count > 0 && ex_get_coord(exoid_, x.data(), y.data(), z.data()) < 0) {
+  if (count > 0 && Exodus().ex_get_coord(exoid_, x.data(), y.data(), z.data()) < 0) {
     return ExodusError("cannot read the node coordinates");
   }
   DataArray& points = document_.grid.points;
@@ -186,7 +187,7 @@ absl::Status ExodusFileReader::ReadBlocks() {
     ex_block param{};
     param.id = block.id;
     param.type = EX_ELEM_BLOCK;
-    if (ex_get_block_param(exoid_, &param) < 0) return ExodusError(where);
+    if (Exodus().ex_get_block_param(exoid_, &param) < 0) return ExodusError(where);
     block.topology = param.topology;
     block.cell_count = param.num_entry;
     absl::StatusOr<ExodusTopology> topology =
@@ -221,8 +222,8 @@ absl::Status ExodusFileReader::ReadBlocks() {
     }
     std::vector<std::int64_t> connectivity(
         static_cast<std::size_t>(param.num_entry * topology->node_count));
-    if (!connectivity.empty() &&
-        ex_get_conn(exoid_, EX_ELEM_BLOCK, block.id, connectivity.data(), nullptr, nullptr) < 0) {
+    if (!connectivity.empty() && Exodus().ex_get_conn(exoid_, EX_ELEM_BLOCK, block.id,
+                                                      connectivity.data(), nullptr, nullptr) < 0) {
       return ExodusError(absl::StrCat(where, ": cannot read the connectivity"));
     }
     std::vector<std::int64_t> nodes(static_cast<std::size_t>(topology->node_count));
@@ -244,14 +245,14 @@ absl::Status ExodusFileReader::ReadBlocks() {
     if (param.num_attribute > 0) {
       block.attributes.resize(static_cast<std::size_t>(param.num_entry * param.num_attribute));
       if (param.num_entry > 0 &&
-          ex_get_attr(exoid_, EX_ELEM_BLOCK, block.id, block.attributes.data()) < 0) {
+          Exodus().ex_get_attr(exoid_, EX_ELEM_BLOCK, block.id, block.attributes.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot read the attributes"));
       }
       std::vector<std::vector<char>> buffers(static_cast<std::size_t>(param.num_attribute),
                                              std::vector<char>(kLongestName + 1, '\0'));
       std::vector<char*> pointers;
       for (std::vector<char>& buffer : buffers) pointers.push_back(buffer.data());
-      if (ex_get_attr_names(exoid_, EX_ELEM_BLOCK, block.id, pointers.data()) < 0) {
+      if (Exodus().ex_get_attr_names(exoid_, EX_ELEM_BLOCK, block.id, pointers.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot read the attribute names"));
       }
       for (std::vector<char>& buffer : buffers) {
@@ -288,8 +289,8 @@ absl::Status ExodusFileReader::ReadSideSets() {
     const std::int64_t factors = counts->factors;
     set.elements.resize(static_cast<std::size_t>(entries));
     set.sides.resize(static_cast<std::size_t>(entries));
-    if (entries > 0 &&
-        ex_get_set(exoid_, EX_SIDE_SET, set.id, set.elements.data(), set.sides.data()) < 0) {
+    if (entries > 0 && Exodus().ex_get_set(exoid_, EX_SIDE_SET, set.id, set.elements.data(),
+                                           set.sides.data()) < 0) {
       return ExodusError(absl::StrCat(where, ": cannot read its elements and sides"));
     }
     // Checked here, before the library looks the sides up: it indexes its side tables with
@@ -317,14 +318,16 @@ absl::Status ExodusFileReader::ReadSideSets() {
     }
     if (factors > 0) {
       set.distribution_factors.resize(static_cast<std::size_t>(factors));
-      if (ex_get_set_dist_fact(exoid_, EX_SIDE_SET, set.id, set.distribution_factors.data()) < 0) {
+      if (Exodus().ex_get_set_dist_fact(exoid_, EX_SIDE_SET, set.id,
+                                        set.distribution_factors.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot read its distribution factors"));
       }
     }
     if (entries > 0) {
       std::vector<std::int64_t> node_counts(static_cast<std::size_t>(entries));
       std::vector<std::int64_t> nodes(static_cast<std::size_t>(4 * entries));
-      if (ex_get_side_set_node_list(exoid_, set.id, node_counts.data(), nodes.data()) < 0) {
+      if (Exodus().ex_get_side_set_node_list(exoid_, set.id, node_counts.data(), nodes.data()) <
+          0) {
         return ExodusError(absl::StrCat(where, ": cannot list the nodes of its sides"));
       }
       std::int64_t position = 0;
@@ -375,7 +378,8 @@ absl::Status ExodusFileReader::ReadNodeSets() {
     const std::int64_t entries = counts->entries;
     const std::int64_t factors = counts->factors;
     set.nodes.resize(static_cast<std::size_t>(entries));
-    if (entries > 0 && ex_get_set(exoid_, EX_NODE_SET, set.id, set.nodes.data(), nullptr) < 0) {
+    if (entries > 0 &&
+        Exodus().ex_get_set(exoid_, EX_NODE_SET, set.id, set.nodes.data(), nullptr) < 0) {
       return ExodusError(absl::StrCat(where, ": cannot read its nodes"));
     }
     for (std::int64_t entry = 0; entry < entries; ++entry) {
@@ -388,7 +392,8 @@ absl::Status ExodusFileReader::ReadNodeSets() {
     }
     if (factors > 0) {
       set.distribution_factors.resize(static_cast<std::size_t>(factors));
-      if (ex_get_set_dist_fact(exoid_, EX_NODE_SET, set.id, set.distribution_factors.data()) < 0) {
+      if (Exodus().ex_get_set_dist_fact(exoid_, EX_NODE_SET, set.id,
+                                        set.distribution_factors.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot read its distribution factors"));
       }
     }
@@ -403,7 +408,7 @@ absl::Status ExodusFileReader::ReadNumberMaps() {
                             std::vector<std::int64_t>* kept) -> absl::Status {
     if (count == 0) return absl::OkStatus();
     std::vector<std::int64_t> map(static_cast<std::size_t>(count));
-    if (ex_get_id_map(exoid_, type, map.data()) < 0) {
+    if (Exodus().ex_get_id_map(exoid_, type, map.data()) < 0) {
       return ExodusError(absl::StrCat("cannot read the ", what));
     }
     for (std::int64_t k = 0; k < count; ++k) {
@@ -426,15 +431,15 @@ void ExodusFileReader::WarnAboutUnread() {
   std::vector<std::string> unread;
   const auto count_of = [&](ex_entity_type type) {
     int count = 0;
-    return ex_get_variable_param(exoid_, type, &count) < 0 ? 0 : count;
+    return Exodus().ex_get_variable_param(exoid_, type, &count) < 0 ? 0 : count;
   };
-  const std::int64_t steps = ex_inquire_int(exoid_, EX_INQ_TIME);
+  const std::int64_t steps = Exodus().ex_inquire_int(exoid_, EX_INQ_TIME);
   const int variables = count_of(EX_GLOBAL) + count_of(EX_NODAL) + count_of(EX_ELEM_BLOCK);
   if (variables > 0) {
     unread.push_back(absl::StrCat(variables, " result variables over ", steps, " time steps"));
   }
-  const std::int64_t qa = ex_inquire_int(exoid_, EX_INQ_QA);
-  const std::int64_t info = ex_inquire_int(exoid_, EX_INQ_INFO);
+  const std::int64_t qa = Exodus().ex_inquire_int(exoid_, EX_INQ_QA);
+  const std::int64_t info = Exodus().ex_inquire_int(exoid_, EX_INQ_INFO);
   if (qa > 0) unread.push_back(absl::StrCat(qa, " QA records"));
   if (info > 0) unread.push_back(absl::StrCat(info, " info records"));
   const std::int64_t other_sets = init_.num_edge_sets + init_.num_face_sets + init_.num_elem_sets;
@@ -448,7 +453,8 @@ void ExodusFileReader::WarnAboutUnread() {
 }
 
 absl::StatusOr<MeshDocument> ExodusFileReader::Read() {
-  if (ex_get_init_ext(exoid_, &init_) < 0) return ExodusError("cannot read the Exodus header");
+  if (Exodus().ex_get_init_ext(exoid_, &init_) < 0)
+    return ExodusError("cannot read the Exodus header");
   if (init_.num_dim != 3) {
     return absl::InvalidArgumentError(
         absl::StrCat("num_dim = ", init_.num_dim, ": getme smooths 3D volume meshes; this file is ",
@@ -465,9 +471,10 @@ absl::StatusOr<MeshDocument> ExodusFileReader::Read() {
     if (absl::Status status = CheckCount(count, what); !status.ok()) return status;
   }
   extras_.title = init_.title;
-  const std::int64_t used_name_length = ex_inquire_int(exoid_, EX_INQ_DB_MAX_USED_NAME_LENGTH);
+  const std::int64_t used_name_length =
+      Exodus().ex_inquire_int(exoid_, EX_INQ_DB_MAX_USED_NAME_LENGTH);
   if (used_name_length > MAX_NAME_LENGTH &&
-      ex_set_max_name_length(
+      Exodus().ex_set_max_name_length(
           exoid_, static_cast<int>(std::min<std::int64_t>(used_name_length, kLongestName))) < 0) {
     return ExodusError("cannot set the name length");
   }

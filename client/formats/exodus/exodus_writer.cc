@@ -14,6 +14,7 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "formats/exodus/exodus_element_types.h"
+#include "formats/exodus/exodus_functions.h"
 #include "formats/exodus/exodus_library.h"
 #include "formats/file_io.h"
 #include "formats/vtk_cell_type.h"
@@ -343,26 +344,26 @@ std::string SetName(absl::string_view kind, std::int64_t id, const std::string& 
 absl::Status WriteElementVariables(int exoid, const Plan& plan) {
   const int count = static_cast<int>(plan.element_variables.size());
   if (count == 0) return absl::OkStatus();
-  if (ex_put_variable_param(exoid, EX_ELEM_BLOCK, count) < 0) {
+  if (Exodus().ex_put_variable_param(exoid, EX_ELEM_BLOCK, count) < 0) {
     return ExodusError("cannot declare the element variables");
   }
   std::vector<std::string> names;
   for (const DataArray* array : plan.element_variables) names.push_back(array->name);
   if (WithNames(names, [&](char** list) {
-        return ex_put_variable_names(exoid, EX_ELEM_BLOCK, count, list);
+        return Exodus().ex_put_variable_names(exoid, EX_ELEM_BLOCK, count, list);
       }) < 0) {
     return ExodusError("cannot write the element variable names");
   }
   const double time = 0.0;
-  if (ex_put_time(exoid, 1, &time) < 0) return ExodusError("cannot write the time step");
+  if (Exodus().ex_put_time(exoid, 1, &time) < 0) return ExodusError("cannot write the time step");
   for (int variable = 0; variable < count; ++variable) {
     const DataArray& array = *plan.element_variables[variable];
     for (const PlannedBlock& block : plan.blocks) {
       std::vector<double> values;
       values.reserve(block.cells.size());
       for (const std::int64_t cell : block.cells) values.push_back(array.AsDouble(cell));
-      if (ex_put_var(exoid, 1, EX_ELEM_BLOCK, variable + 1, block.id,
-                     static_cast<std::int64_t>(values.size()), values.data()) < 0) {
+      if (Exodus().ex_put_var(exoid, 1, EX_ELEM_BLOCK, variable + 1, block.id,
+                              static_cast<std::int64_t>(values.size()), values.data()) < 0) {
         return ExodusError(
             absl::StrCat("element variable '", array.name, "', element block ", block.id));
       }
@@ -386,7 +387,7 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
     longest_name = std::max(longest_name, array->name.size());
   }
   if (longest_name > MAX_NAME_LENGTH &&
-      ex_set_max_name_length(exoid, static_cast<int>(longest_name)) < 0) {
+      Exodus().ex_set_max_name_length(exoid, static_cast<int>(longest_name)) < 0) {
     return ExodusError("cannot set the name length");
   }
 
@@ -401,7 +402,8 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
   init.num_elem_blk = static_cast<std::int64_t>(plan.blocks.size());
   init.num_side_sets = static_cast<std::int64_t>(plan.side_sets.size());
   init.num_node_sets = static_cast<std::int64_t>(plan.node_sets.size());
-  if (ex_put_init_ext(exoid, &init) < 0) return ExodusError("cannot write the Exodus header");
+  if (Exodus().ex_put_init_ext(exoid, &init) < 0)
+    return ExodusError("cannot write the Exodus header");
 
   std::vector<double> x(point_count), y(point_count), z(point_count);
   for (std::int64_t node = 0; node < point_count; ++node) {
@@ -409,11 +411,11 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
     y[node] = grid.points.AsDouble(3 * node + 1);
     z[node] = grid.points.AsDouble(3 * node + 2);
   }
-  if (ex_put_coord(exoid, x.data(), y.data(), z.data()) < 0) {
+  if (Exodus().ex_put_coord(exoid, x.data(), y.data(), z.data()) < 0) {
     return ExodusError("cannot write the node coordinates");
   }
-  if (WithNames({"X", "Y", "Z"}, [&](char** names) { return ex_put_coord_names(exoid, names); }) <
-      0) {
+  if (WithNames({"X", "Y", "Z"},
+                [&](char** names) { return Exodus().ex_put_coord_names(exoid, names); }) < 0) {
     return ExodusError("cannot write the coordinate names");
   }
 
@@ -427,8 +429,8 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
                                                    std::max<std::int64_t>(1, kept->cell_count)
                                              : 0;
     const std::int64_t count = static_cast<std::int64_t>(block.cells.size());
-    if (ex_put_block(exoid, EX_ELEM_BLOCK, block.id, block.topology.c_str(), count,
-                     block.node_count, 0, 0, attribute_count) < 0) {
+    if (Exodus().ex_put_block(exoid, EX_ELEM_BLOCK, block.id, block.topology.c_str(), count,
+                              block.node_count, 0, 0, attribute_count) < 0) {
       return ExodusError(where);
     }
     std::vector<std::int64_t> connectivity;
@@ -436,24 +438,26 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
     for (const std::int64_t cell : block.cells) {
       for (const std::int64_t node : ExodusNodes(cells, cell)) connectivity.push_back(node + 1);
     }
-    if (ex_put_conn(exoid, EX_ELEM_BLOCK, block.id, connectivity.data(), nullptr, nullptr) < 0) {
+    if (Exodus().ex_put_conn(exoid, EX_ELEM_BLOCK, block.id, connectivity.data(), nullptr,
+                             nullptr) < 0) {
       return ExodusError(absl::StrCat(where, ": cannot write the connectivity"));
     }
     if (attribute_count > 0) {
-      if (ex_put_attr(exoid, EX_ELEM_BLOCK, block.id, kept->attributes.data()) < 0) {
+      if (Exodus().ex_put_attr(exoid, EX_ELEM_BLOCK, block.id, kept->attributes.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot write the attributes"));
       }
       if (static_cast<std::int64_t>(kept->attribute_names.size()) == attribute_count &&
           WithNames(kept->attribute_names, [&](char** names) {
-            return ex_put_attr_names(exoid, EX_ELEM_BLOCK, block.id, names);
+            return Exodus().ex_put_attr_names(exoid, EX_ELEM_BLOCK, block.id, names);
           }) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot write the attribute names"));
       }
     }
     block_names.push_back(block.name);
   }
-  if (WithNames(block_names,
-                [&](char** names) { return ex_put_names(exoid, EX_ELEM_BLOCK, names); }) < 0) {
+  if (WithNames(block_names, [&](char** names) {
+        return Exodus().ex_put_names(exoid, EX_ELEM_BLOCK, names);
+      }) < 0) {
     return ExodusError("cannot write the element block names");
   }
 
@@ -467,20 +471,22 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
                                 !source.distribution_factors.empty();
       const std::int64_t factors =
           keep_factors ? static_cast<std::int64_t>(source.distribution_factors.size()) : 0;
-      if (ex_put_set_param(exoid, EX_SIDE_SET, source.id, count, factors) < 0) {
+      if (Exodus().ex_put_set_param(exoid, EX_SIDE_SET, source.id, count, factors) < 0) {
         return ExodusError(where);
       }
-      if (count > 0 &&
-          ex_put_set(exoid, EX_SIDE_SET, source.id, set.elements.data(), set.sides.data()) < 0) {
+      if (count > 0 && Exodus().ex_put_set(exoid, EX_SIDE_SET, source.id, set.elements.data(),
+                                           set.sides.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot write its sides"));
       }
-      if (factors > 0 && ex_put_set_dist_fact(exoid, EX_SIDE_SET, source.id,
-                                              source.distribution_factors.data()) < 0) {
+      if (factors > 0 && Exodus().ex_put_set_dist_fact(exoid, EX_SIDE_SET, source.id,
+                                                       source.distribution_factors.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot write its distribution factors"));
       }
       names.push_back(source.name);
     }
-    if (WithNames(names, [&](char** list) { return ex_put_names(exoid, EX_SIDE_SET, list); }) < 0) {
+    if (WithNames(names, [&](char** list) {
+          return Exodus().ex_put_names(exoid, EX_SIDE_SET, list);
+        }) < 0) {
       return ExodusError("cannot write the side set names");
     }
   }
@@ -491,21 +497,24 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
       const std::string where = SetName("node set", set->id, set->name);
       const std::int64_t count = static_cast<std::int64_t>(set->nodes.size());
       const std::int64_t factors = static_cast<std::int64_t>(set->distribution_factors.size());
-      if (ex_put_set_param(exoid, EX_NODE_SET, set->id, count, factors) < 0) {
+      if (Exodus().ex_put_set_param(exoid, EX_NODE_SET, set->id, count, factors) < 0) {
         return ExodusError(where);
       }
       std::vector<std::int64_t> nodes(set->nodes);
       for (std::int64_t& node : nodes) ++node;
-      if (count > 0 && ex_put_set(exoid, EX_NODE_SET, set->id, nodes.data(), nullptr) < 0) {
+      if (count > 0 &&
+          Exodus().ex_put_set(exoid, EX_NODE_SET, set->id, nodes.data(), nullptr) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot write its nodes"));
       }
-      if (factors > 0 &&
-          ex_put_set_dist_fact(exoid, EX_NODE_SET, set->id, set->distribution_factors.data()) < 0) {
+      if (factors > 0 && Exodus().ex_put_set_dist_fact(exoid, EX_NODE_SET, set->id,
+                                                       set->distribution_factors.data()) < 0) {
         return ExodusError(absl::StrCat(where, ": cannot write its distribution factors"));
       }
       names.push_back(set->name);
     }
-    if (WithNames(names, [&](char** list) { return ex_put_names(exoid, EX_NODE_SET, list); }) < 0) {
+    if (WithNames(names, [&](char** list) {
+          return Exodus().ex_put_names(exoid, EX_NODE_SET, list);
+        }) < 0) {
       return ExodusError("cannot write the node set names");
     }
   }
@@ -515,12 +524,12 @@ absl::Status WritePlan(int exoid, const MeshDocument& document, const Plan& plan
   if (document.exodus.has_value()) {
     const std::vector<std::int64_t>& nodes = document.exodus->node_number_map;
     if (static_cast<std::int64_t>(nodes.size()) == point_count &&
-        ex_put_id_map(exoid, EX_NODE_MAP, nodes.data()) < 0) {
+        Exodus().ex_put_id_map(exoid, EX_NODE_MAP, nodes.data()) < 0) {
       return ExodusError("cannot write the node number map");
     }
     const std::vector<std::int64_t>& elements = document.exodus->element_number_map;
     if (static_cast<std::int64_t>(elements.size()) == plan.element_count && !plan.reordered &&
-        ex_put_id_map(exoid, EX_ELEM_MAP, elements.data()) < 0) {
+        Exodus().ex_put_id_map(exoid, EX_ELEM_MAP, elements.data()) < 0) {
       return ExodusError("cannot write the element number map");
     }
   }

@@ -8,7 +8,8 @@
 // types, not Highway ops: the kernels were already generic over their lane type, and the wider
 // lanes must give the reference's bits, which holds because every lane operation is an IEEE 754
 // operation on that lane (lanes.h). Highway's part is what a library does better than a
-// hand-written switch: CPU and OS (XSAVE) detection, per-target compilation and isolation.
+// hand-written switch: per-target compilation and isolation. Only its headers are used: the run
+// time check is wide_vector_support.h, which says why.
 // -ffp-contract=off (core/CMakeLists.txt) keeps the compiler from fusing a·b + c into one
 // rounding, which would change bits.
 
@@ -63,6 +64,7 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 #include "absl/strings/str_cat.h"
+#include "getme/smoothing/wide_vector_support.h"
 
 namespace getme {
 namespace {
@@ -82,12 +84,12 @@ const ElementPasses kReferencePasses = {
 // Widest first.
 std::vector<const ElementPasses*> RunnablePasses() {
   std::vector<const ElementPasses*> passes;
-  const std::int64_t supported = hwy::SupportedTargets();
+  [[maybe_unused]] const WideVectorSupport supported = DetectWideVectorSupport();
 #if HWY_TARGETS & HWY_AVX3
-  if (supported & HWY_AVX3) passes.push_back(&N_AVX3::kTargetPasses);
+  if (supported.avx512) passes.push_back(&N_AVX3::kTargetPasses);
 #endif
 #if HWY_TARGETS & HWY_AVX2
-  if (supported & HWY_AVX2) passes.push_back(&N_AVX2::kTargetPasses);
+  if (supported.avx2) passes.push_back(&N_AVX2::kTargetPasses);
 #endif
   passes.push_back(&kReferencePasses);
   return passes;
