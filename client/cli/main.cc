@@ -1,9 +1,16 @@
 // getme: the local command-line front end. Dispatches to the subcommands; everything else lives
-// in the getme_cli library so the gRPC client can reuse it.
+// in the getme_cli library so the gRPC client can reuse it. Built twice (client/CMakeLists.txt):
+// `getme` without the service, which hands the commands that need a server to `getme-remote`,
+// built from this same file with GETME_WITH_SERVICE.
+
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "absl/status/status.h"
@@ -44,12 +51,30 @@ int PrintUsage(const char* usage) {
 }
 
 #ifndef GETME_WITH_SERVICE
-int ServiceNotBuilt(bool json) {
+// --server and `getme jobs`: run by getme-remote, from getme's own directory, with the same
+// arguments, in place of this process (so its exit status, signals and output are the user's).
+int RunWithTheService(char** argv, bool json) {
+#ifdef GETME_REMOTE_BINARY
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::string remote = error ? std::string(GETME_REMOTE_BINARY)
+                                   : (self.parent_path() / GETME_REMOTE_BINARY).string();
+  std::fflush(nullptr);
+  execv(remote.c_str(), argv);  // returns only when it cannot run
+  const int exec_error = errno;
+  return getme::cli::ReportFailure(
+      absl::FailedPreconditionError(
+          absl::StrCat("--server and 'getme jobs' run in ", remote,
+                       ", which cannot be started: ", std::generic_category().message(exec_error))),
+      json, getme::cli::kExitFailure);
+#else
+  (void)argv;
   return getme::cli::ReportFailure(
       absl::UnimplementedError("this getme was built without the gRPC service "
                                "(GETME_BUILD_SERVICE=OFF): --server and 'getme jobs' are "
                                "unavailable"),
       json, getme::cli::kExitUsage);
+#endif
 }
 #endif
 
@@ -87,7 +112,7 @@ int main(int argc, char** argv) {
 #ifdef GETME_WITH_SERVICE
       return getme::cli::RunRemoteSmoothCommand(*options);
 #else
-      return ServiceNotBuilt(json);
+      return RunWithTheService(argv, json);
 #endif
     }
     return getme::cli::RunSmoothCommand(*options);
@@ -102,7 +127,7 @@ int main(int argc, char** argv) {
 #ifdef GETME_WITH_SERVICE
       return getme::cli::RunRemoteQualityCommand(*options);
 #else
-      return ServiceNotBuilt(json);
+      return RunWithTheService(argv, json);
 #endif
     }
     return getme::cli::RunQualityCommand(*options);
@@ -131,7 +156,7 @@ int main(int argc, char** argv) {
 #ifdef GETME_WITH_SERVICE
     return getme::cli::RunJobsCommand(*options);
 #else
-    return ServiceNotBuilt(json);
+    return RunWithTheService(argv, json);
 #endif
   }
   return getme::cli::ReportFailure(

@@ -455,6 +455,38 @@ TEST(CliErrors, BoundaryOptionsAreChecked) {
       << free_layers.err;
 }
 
+#if GETME_SERVICE_BUILT
+// getme is not linked with gRPC (its libraries would cost every local run's start); the
+// commands that need a server run in getme-remote from getme's own directory.
+TEST(CliRemoteHandOver, GetmeLinksNoGrpcAndNamesAMissingGetmeRemote) {
+  const std::string getme = std::string(GETME_BINARY_DIR) + "/bin/getme";
+  const testing::RunResult ldd = testing::RunProgram("/usr/bin/ldd", {getme});
+  ASSERT_EQ(ldd.exit_status, 0) << ldd.err;
+  EXPECT_EQ(ldd.out.find("libgrpc"), std::string::npos) << ldd.out;
+  EXPECT_EQ(ldd.out.find("libprotobuf"), std::string::npos) << ldd.out;
+
+  // A getme copied without its getme-remote: the service commands say what is missing.
+  const std::filesystem::path alone = TempPath("alone");
+  std::filesystem::create_directories(alone);
+  std::filesystem::copy_file(getme, alone / "getme",
+                             std::filesystem::copy_options::overwrite_existing);
+  const testing::RunResult jobs =
+      testing::RunProgram((alone / "getme").string(), {"jobs", "list", "--server", "127.0.0.1:1"});
+  EXPECT_EQ(jobs.exit_status, 1) << jobs.err;
+  EXPECT_NE(
+      jobs.err.find(absl::StrCat("--server and 'getme jobs' run in ",
+                                 (std::filesystem::canonical(alone) / "getme-remote").string(),
+                                 ", which cannot be started: No such file or directory")),
+      std::string::npos)
+      << jobs.err;
+  // Local commands need nothing beside it.
+  EXPECT_EQ(testing::RunProgram((alone / "getme").string(),
+                                {"quality", SharedMesh("mixed-hex-pyr-tet.vtk")})
+                .exit_status,
+            0);
+}
+#endif
+
 TEST(CliQuality, JsonReportsTheMixedMesh) {
   const testing::RunResult run =
       RunGetme({"quality", SharedMesh("mixed-hex-pyr-tet.vtk"), "--json", "--bins", "7"});

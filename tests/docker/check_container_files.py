@@ -170,7 +170,7 @@ def main(argv):
         check(f"/src/build/bin/{name}" in copied, f"the runtime stage copies build/bin/{name}")
         needed = {}
         libraries = shared_libraries(binary)
-        if name == "getme":
+        if name in ("getme", "getme-remote"):
             libraries += runtime_loaded_libraries(repo)
         for library, package in owning_packages(libraries).items():
             if not (sanitizer_build and package in SANITIZER_PACKAGES):
