@@ -56,10 +56,11 @@ ABSL_FLAG(absl::Duration, result_ttl, absl::Minutes(30),
 ABSL_FLAG(absl::Duration, progress_interval, absl::Milliseconds(100),
           "at most one intermediate progress event per watcher per this interval (phase ends and "
           "the final event always go out)");
-ABSL_FLAG(std::string, job_store, "",
-          "redis://[[user]:password@]host[:port][/db]: share jobs with every replica pointed at "
-          "the same Redis (queue, progress, results, limits; docs/replicas.md); rediss:// for TLS, "
-          "with ?cacert=PATH&cert=PATH&key=PATH as needed; empty = jobs live in this process");
+ABSL_FLAG(
+    std::string, job_store, "",
+    "redis://[[user]:password@]host[:port][/db]: share jobs with every replica pointed at "
+    "the same Redis (queue, progress, results, limits; docs/replicas.md); rediss:// for TLS, "
+    "with ?cacert=PATH&cert=PATH&key=PATH&sni=NAME as needed; empty = jobs live in this process");
 ABSL_FLAG(absl::Duration, job_lease, absl::Seconds(10),
           "with --job_store: a job whose replica has not renewed its lease for this long (it died) "
           "is queued again and restarted by another replica");

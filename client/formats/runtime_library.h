@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <string>
 
 #include "absl/status/status.h"
@@ -42,6 +45,49 @@ class RuntimeLibrary {
 
   void* handle_;
   std::string soname_;
+};
+
+// A table of functions (a struct of function pointers) bound from one RuntimeLibrary the first
+// time a reader or writer needs it, once per process.
+template <typename Functions>
+class LazyFunctionTable {
+ public:
+  // Binds every member of the table from the library; may also set the library's options.
+  using Binder = absl::Status (*)(const RuntimeLibrary& library, Functions& functions);
+
+  LazyFunctionTable(const char* soname, const char* format, const char* package, Binder bind)
+      : soname_(soname), format_(format), package_(package), bind_(bind) {}
+
+  // Opens and binds on the first call; later calls return the first call's outcome.
+  absl::Status Load() {
+    std::call_once(once_, [this] {
+      absl::StatusOr<RuntimeLibrary> library = RuntimeLibrary::Open(soname_, format_, package_);
+      status_ = library.ok() ? bind_(*library, functions_) : library.status();
+      loaded_ = status_.ok();
+    });
+    return status_;
+  }
+
+  // The bound functions. Only after Load succeeded: called before, it aborts, since every
+  // caller would crash on a null function anyway.
+  const Functions& Get() const {
+    if (!loaded_) {
+      std::fprintf(stderr, "getme: a %s function was called before its library was loaded\n",
+                   format_);
+      std::abort();
+    }
+    return functions_;
+  }
+
+ private:
+  const char* soname_;
+  const char* format_;
+  const char* package_;
+  Binder bind_;
+  std::once_flag once_;
+  absl::Status status_;
+  bool loaded_ = false;
+  Functions functions_;
 };
 
 }  // namespace getme::formats

@@ -13,7 +13,7 @@ namespace getme::redis {
 namespace {
 
 constexpr absl::string_view kForm = "redis[s]://[[user]:password@]host[:port][/db]";
-constexpr absl::string_view kTlsParameters = "cacert, cert, key";
+constexpr absl::string_view kTlsParameters = "cacert, cert, key, sni";
 
 std::optional<int> HexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -45,7 +45,7 @@ std::string HostForUrl(const std::string& host) {
   return absl::StrContains(host, ':') ? absl::StrCat("[", host, "]") : host;
 }
 
-// cacert=PATH&cert=PATH&key=PATH, each at most once, values percent-decoded.
+// cacert=PATH&cert=PATH&key=PATH&sni=NAME, each at most once, values percent-decoded.
 absl::Status ParseTlsParameters(absl::string_view query, RedisAddress& address) {
   for (absl::string_view parameter : absl::StrSplit(query, '&')) {
     const size_t equals = parameter.find('=');
@@ -53,6 +53,7 @@ absl::Status ParseTlsParameters(absl::string_view query, RedisAddress& address) 
     std::string* field = name == "cacert" ? &address.tls_ca_file
                          : name == "cert" ? &address.tls_cert_file
                          : name == "key"  ? &address.tls_key_file
+                         : name == "sni"  ? &address.tls_server_name
                                           : nullptr;
     if (field == nullptr) {
       return absl::InvalidArgumentError(absl::StrCat("redis URL: unknown parameter '", name,
@@ -63,7 +64,9 @@ absl::Status ParseTlsParameters(absl::string_view query, RedisAddress& address) 
                                            : PercentDecode(parameter.substr(equals + 1));
     if (!value || value->empty()) {
       return absl::InvalidArgumentError(
-          absl::StrCat("redis URL: parameter '", name, "' needs a file path: ", name, "=PATH"));
+          name == "sni" ? std::string("redis URL: parameter 'sni' needs a host name: sni=NAME")
+                        : absl::StrCat("redis URL: parameter '", name,
+                                       "' needs a file path: ", name, "=PATH"));
     }
     if (!field->empty()) {
       return absl::InvalidArgumentError(

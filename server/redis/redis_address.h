@@ -19,22 +19,26 @@ struct RedisAddress {
   int db = 0;            // sent as SELECT when not 0
 
   // rediss://: the connection is TLS (1.2 or later); the server's certificate must chain to
-  // `tls_ca_file` (PEM) or, when that is empty, to the system's trusted CAs, and name `host`
-  // (a DNS name or an IP address in its subjectAltName). A client certificate is sent when
-  // `tls_cert_file` and `tls_key_file` are set (Redis's tls-auth-clients, on by default).
+  // `tls_ca_file` (PEM) or, when that is empty, to the system's trusted CAs, and name
+  // `tls_server_name` or, when that is empty, `host` (a DNS name or an IP address in its
+  // subjectAltName). A client certificate is sent when `tls_cert_file` and `tls_key_file` are
+  // set (Redis's tls-auth-clients, on by default).
   bool tls = false;
   std::string tls_ca_file;
   std::string tls_cert_file;
   std::string tls_key_file;
+  // The name sent as SNI and checked against the certificate, for a server reached by another
+  // address than the one its certificate names (an IP address, a tunnel); redis-cli's --sni.
+  std::string tls_server_name;
 };
 
 // redis://[[user]:password@]host[:port][/db], e.g. redis://:s3cret@redis:6379/2, or the same
 // with rediss:// for TLS, which takes the files as query parameters named like redis-cli's
 // flags: rediss://host:6380/0?cacert=/etc/ca.pem&cert=/etc/client.pem&key=/etc/client.key
-// (cert and key together or neither). The user, password and parameter values may be
-// percent-encoded (RFC 3986), which is how a password holding '@', ':' or '/' is written. A
-// user without a password (redis://user@host) is refused: there would be nothing to send AUTH
-// with. INVALID_ARGUMENT naming the part that is wrong (scheme, host, port, database,
+// (cert and key together or neither; sni=NAME for tls_server_name). The user, password and
+// parameter values may be percent-encoded (RFC 3986), which is how a password holding '@', ':' or
+// '/' is written. A user without a password (redis://user@host) is refused: there would be nothing
+// to send AUTH with. INVALID_ARGUMENT naming the part that is wrong (scheme, host, port, database,
 // percent-encoding, parameter); the message never repeats the URL, which may hold the password.
 absl::StatusOr<RedisAddress> ParseRedisUrl(absl::string_view url);
 

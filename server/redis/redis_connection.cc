@@ -32,6 +32,19 @@ RedisReply CopyReply(const redisReply& reply) {
   }
 }
 
+// A command's words as hiredis's argv functions take them.
+struct CommandArgv {
+  explicit CommandArgv(const RedisArgs& command) {
+    for (std::string_view word : command) {
+      words.push_back(word.data());
+      lengths.push_back(word.size());
+    }
+  }
+  int count() const { return static_cast<int>(words.size()); }
+  std::vector<const char*> words;
+  std::vector<size_t> lengths;
+};
+
 struct ReplyDeleter {
   void operator()(void* reply) const { freeReplyObject(reply); }
 };
@@ -134,18 +147,11 @@ absl::StatusOr<std::vector<RedisReply>> RedisConnection::Exchange(
         absl::StrCat("redis: connection to ", redacted_url_, " is broken"));
   }
   if (tls_ != nullptr) return ExchangeOverTls(commands);
-  std::vector<const char*> words;
-  std::vector<size_t> lengths;
   for (const RedisArgs& command : commands) {
-    words.clear();
-    lengths.clear();
-    for (std::string_view word : command) {
-      words.push_back(word.data());
-      lengths.push_back(word.size());
-    }
+    CommandArgv argv(command);  // not const: hiredis takes a const char**
     // Appending only fills hiredis's output buffer; the first redisGetReply writes it all.
-    if (redisAppendCommandArgv(context_, static_cast<int>(words.size()), words.data(),
-                               lengths.data()) != REDIS_OK) {
+    if (redisAppendCommandArgv(context_, argv.count(), argv.words.data(), argv.lengths.data()) !=
+        REDIS_OK) {
       broken_ = true;
       return StatusFromConnectionError(context_->err, errno, context_->errstr,
                                        Describe(commands, redacted_url_));
@@ -172,18 +178,11 @@ absl::StatusOr<std::vector<RedisReply>> RedisConnection::ExchangeOverTls(
     const std::vector<RedisArgs>& commands) {
   // Every command formatted into one request, as redisAppendCommandArgv would buffer them.
   std::string request;
-  std::vector<const char*> words;
-  std::vector<size_t> lengths;
   for (const RedisArgs& command : commands) {
-    words.clear();
-    lengths.clear();
-    for (std::string_view word : command) {
-      words.push_back(word.data());
-      lengths.push_back(word.size());
-    }
+    CommandArgv argv(command);  // not const: hiredis takes a const char**
     char* formatted = nullptr;
-    const int length = redisFormatCommandArgv(&formatted, static_cast<int>(words.size()),
-                                              words.data(), lengths.data());
+    const int length =
+        redisFormatCommandArgv(&formatted, argv.count(), argv.words.data(), argv.lengths.data());
     if (length < 0) {
       broken_ = true;
       return absl::InternalError(

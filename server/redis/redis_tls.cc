@@ -120,17 +120,19 @@ absl::StatusOr<std::unique_ptr<TlsSession>> TlsSession::Handshake(int socket_fd,
   }
   SSL_set_bio(openssl->ssl, openssl->from_network, openssl->to_network);
   SSL* ssl = openssl->ssl;
-  // The certificate must name the address dialled: an IP address must be one of its IP
-  // subjectAltNames, a host name one of its DNS names (which also goes out as SNI).
+  // The certificate must name the address dialled (or the server name the URL gives instead):
+  // an IP address must be one of its IP subjectAltNames, a host name one of its DNS names
+  // (which also goes out as SNI).
+  const std::string& name =
+      address.tls_server_name.empty() ? address.host : address.tls_server_name;
   X509_VERIFY_PARAM* verify = SSL_get0_param(ssl);
-  if (X509_VERIFY_PARAM_set1_ip_asc(verify, address.host.c_str()) != 1) {
+  if (X509_VERIFY_PARAM_set1_ip_asc(verify, name.c_str()) != 1) {
     ERR_clear_error();  // not an IP address
     X509_VERIFY_PARAM_set_hostflags(verify, X509_CHECK_FLAG_NO_PARTIAL_WILDCARDS);
-    if (X509_VERIFY_PARAM_set1_host(verify, address.host.c_str(), address.host.size()) != 1 ||
-        SSL_set_tlsext_host_name(ssl, address.host.c_str()) != 1) {
-      return absl::InvalidArgumentError(
-          absl::StrCat("redis: '", address.host,
-                       "' cannot be checked against a certificate: ", TakeOpenSslErrors()));
+    if (X509_VERIFY_PARAM_set1_host(verify, name.c_str(), name.size()) != 1 ||
+        SSL_set_tlsext_host_name(ssl, name.c_str()) != 1) {
+      return absl::InvalidArgumentError(absl::StrCat(
+          "redis: '", name, "' cannot be checked against a certificate: ", TakeOpenSslErrors()));
     }
   }
 

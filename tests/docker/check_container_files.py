@@ -5,7 +5,7 @@ What can be checked here, is:
   * the Dockerfile's build stage runs scripts/setup.sh and scripts/build.sh (the README's way),
     and both stages start from debian:bookworm-slim;
   * every shared library that `ldd` reports for the binaries the runtime stage copies, and every
-    library the CLI opens at run time for a file format (RuntimeLibrary::Open in client/), is provided
+    library the CLI opens at run time for a file format (a LazyFunctionTable in client/), is provided
     by a Debian package (`dpkg -S` on this machine) that the runtime stage installs, directly or
     as a dependency apt pulls in (`apt-cache depends --recurse`): the format libraries bring
     HDF5, netCDF and their own dependencies, which the Dockerfile need not spell out;
@@ -123,6 +123,10 @@ def shared_libraries(binary):
     return libraries
 
 
+# `static LazyFunctionTable<CgnsFunctions> table("libcgns.so.3.4", …`
+TABLE_SONAME = re.compile(r'LazyFunctionTable<\w+>\s+\w+\(\s*"([^"]+)"')
+
+
 def runtime_loaded_libraries(repo):
     """The libraries the CLI opens with dlopen when a format needs them
     (client/formats/runtime_library.h), with their own dependencies: `ldd` cannot see them, so
@@ -132,7 +136,7 @@ def runtime_loaded_libraries(repo):
         for name in files:
             if name.endswith(".cc"):
                 with open(os.path.join(root, name), encoding="utf-8") as f:
-                    sonames.update(re.findall(r'RuntimeLibrary::Open\(\s*"([^"]+)"', f.read()))
+                    sonames.update(re.findall(TABLE_SONAME, f.read()))
     check(len(sonames) >= 2, f"the CLI opens {len(sonames)} format libraries at run time "
                              f"({', '.join(sorted(sonames))})")
     cache = subprocess.run(["/sbin/ldconfig", "-p"], capture_output=True, text=True,

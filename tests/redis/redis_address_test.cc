@@ -87,27 +87,32 @@ TEST(ParseRedisUrl, RedissIsTlsWithItsFilesAsParameters) {
   EXPECT_EQ(bare.tls_ca_file, "");  // the system's trusted CAs
   EXPECT_EQ(bare.tls_cert_file, "");
 
-  const RedisAddress files =
-      Parsed("rediss://redis/0?cacert=/etc/ca.pem&cert=/etc/my%20client.pem&key=/etc/c.key");
+  const RedisAddress files = Parsed(
+      "rediss://redis/0?cacert=/etc/ca.pem&cert=/etc/my%20client.pem&key=/etc/c.key"
+      "&sni=redis.internal");
   EXPECT_TRUE(files.tls);
   EXPECT_EQ(files.host, "redis");
   EXPECT_EQ(files.db, 0);
   EXPECT_EQ(files.tls_ca_file, "/etc/ca.pem");
   EXPECT_EQ(files.tls_cert_file, "/etc/my client.pem");
   EXPECT_EQ(files.tls_key_file, "/etc/c.key");
+  EXPECT_EQ(files.tls_server_name, "redis.internal");
+  EXPECT_EQ(bare.tls_server_name, "");  // the host
   // Without a path: the parameters follow the authority.
   EXPECT_EQ(Parsed("REDISS://[::1]:7000?cacert=ca.pem").tls_ca_file, "ca.pem");
 }
 
 TEST(ParseRedisUrl, RefusesBadTlsParameters) {
   ExpectRefused("rediss://redis?timeout=1", absl::StatusCode::kInvalidArgument,
-                "redis URL: unknown parameter 'timeout' (rediss:// takes cacert, cert, key)");
+                "redis URL: unknown parameter 'timeout' (rediss:// takes cacert, cert, key, sni)");
   ExpectRefused("rediss://redis?cacert", absl::StatusCode::kInvalidArgument,
                 "redis URL: parameter 'cacert' needs a file path: cacert=PATH");
   ExpectRefused("rediss://redis?cacert=", absl::StatusCode::kInvalidArgument,
                 "redis URL: parameter 'cacert' needs a file path: cacert=PATH");
   ExpectRefused("rediss://redis?cacert=%zz", absl::StatusCode::kInvalidArgument,
                 "redis URL: parameter 'cacert' needs a file path: cacert=PATH");
+  ExpectRefused("rediss://redis?sni=", absl::StatusCode::kInvalidArgument,
+                "redis URL: parameter 'sni' needs a host name: sni=NAME");
   ExpectRefused("rediss://redis?cacert=a&cacert=b", absl::StatusCode::kInvalidArgument,
                 "redis URL: parameter 'cacert' is given twice");
   ExpectRefused("rediss://redis?cert=c.pem", absl::StatusCode::kInvalidArgument,
@@ -146,7 +151,7 @@ TEST(ParseRedisUrl, RefusesBadDatabases) {
 
 TEST(ParseRedisUrl, RefusesQueriesWithoutTlsAndFragments) {
   ExpectRefused("redis://redis?cacert=ca.pem", absl::StatusCode::kInvalidArgument,
-                "redis URL: query parameters are for rediss:// (TLS) only: cacert, cert, key");
+                "redis URL: query parameters are for rediss:// (TLS) only: cacert, cert, key, sni");
   for (const char* url : {"redis://redis/0#x", "rediss://redis/0?cacert=a#x"}) {
     ExpectRefused(url, absl::StatusCode::kInvalidArgument,
                   "redis URL: fragments ('#') are not supported");

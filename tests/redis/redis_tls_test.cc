@@ -81,10 +81,17 @@ TEST_F(RedisTlsTest, CommandsPipelinesAndScriptsWorkOverTls) {
   EXPECT_EQ(sum->integer(), 42);
 }
 
-TEST_F(RedisTlsTest, AHostNameTheCertificateNamesWorksToo) {
+// The DNS-name check, without a resolver (a fresh machine may have no /etc/hosts): the server is
+// dialled at 127.0.0.1 and the certificate checked for the name `sni` gives.
+TEST_F(RedisTlsTest, TheCertificateIsCheckedForTheServerNameWhenOneIsGiven) {
   RedisAddress address = Address();
-  address.host = "localhost";  // the certificate's DNS name; IP 127.0.0.1 is its other name
+  address.tls_server_name = "localhost";  // the certificate's DNS name
   EXPECT_TRUE(ConnectStatus(address).ok()) << ConnectStatus(address);
+  address.tls_server_name = "redis.example";
+  EXPECT_EQ(ConnectStatus(address),
+            absl::UnavailableError(
+                absl::StrCat("redis: TLS handshake with rediss://127.0.0.1:", server_->port(),
+                             "/0 failed: certificate verify failed (hostname mismatch)")));
 }
 
 // redis-server sends its CA along with its certificate (OpenSSL builds the chain from its trust

@@ -144,6 +144,16 @@ v1::Mesh SingleProcessResult(const v1::Mesh& mesh, const remote::SmoothJobOption
   return result.ok() ? result->mesh : v1::Mesh();
 }
 
+// Every event of a job as a watcher on `replica` receives them, to the end.
+absl::StatusOr<std::vector<v1::ProgressEvent>> WatchToTheEnd(const Replica& replica,
+                                                             const std::string& job_id) {
+  std::vector<v1::ProgressEvent> events;
+  absl::Status watched = replica.client->WatchJob(
+      job_id, [&](const v1::ProgressEvent& event) { events.push_back(event); });
+  if (!watched.ok()) return watched;
+  return events;
+}
+
 void ExpectSameCoordinates(const v1::Mesh& expected, const v1::Mesh& actual) {
   ASSERT_EQ(expected.coordinates_size(), actual.coordinates_size());
   for (int i = 0; i < expected.coordinates_size(); ++i) {
@@ -158,12 +168,10 @@ TEST_F(ReplicasTest, SubmitOnAWatchOnBFromTheFirstEventFetchOnCGivesTheSinglePro
   absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, job);
   ASSERT_TRUE(submitted.ok()) << submitted.status();
 
-  std::vector<v1::ProgressEvent> events;
-  ASSERT_TRUE(replicas_[1]
-                  .client
-                  ->WatchJob(submitted->job_id(),
-                             [&](const v1::ProgressEvent& event) { events.push_back(event); })
-                  .ok());
+  absl::StatusOr<std::vector<v1::ProgressEvent>> watched =
+      WatchToTheEnd(replicas_[1], submitted->job_id());
+  ASSERT_TRUE(watched.ok()) << watched.status();
+  const std::vector<v1::ProgressEvent>& events = *watched;
   ASSERT_FALSE(events.empty());
   for (std::size_t i = 0; i < events.size(); ++i) {
     EXPECT_EQ(events[i].job_id(), submitted->job_id());
@@ -175,15 +183,12 @@ TEST_F(ReplicasTest, SubmitOnAWatchOnBFromTheFirstEventFetchOnCGivesTheSinglePro
   EXPECT_TRUE(events.back().final());
   // A watcher on another replica, after the end, gets the same events from the first one, with
   // the same numbers.
-  std::vector<v1::ProgressEvent> replayed;
-  ASSERT_TRUE(replicas_[2]
-                  .client
-                  ->WatchJob(submitted->job_id(),
-                             [&](const v1::ProgressEvent& event) { replayed.push_back(event); })
-                  .ok());
-  ASSERT_EQ(replayed.size(), events.size());
+  absl::StatusOr<std::vector<v1::ProgressEvent>> replayed =
+      WatchToTheEnd(replicas_[2], submitted->job_id());
+  ASSERT_TRUE(replayed.ok()) << replayed.status();
+  ASSERT_EQ(replayed->size(), events.size());
   for (std::size_t i = 0; i < events.size(); ++i) {
-    EXPECT_EQ(replayed[i].SerializeAsString(), events[i].SerializeAsString()) << "event " << i;
+    EXPECT_EQ((*replayed)[i].SerializeAsString(), events[i].SerializeAsString()) << "event " << i;
   }
   // Intermediate events are thinned to one per flush; every phase's end is there.
   const auto phase_ends = std::count_if(events.begin(), events.end(),
@@ -578,14 +583,11 @@ TEST_F(ReplicasOverTlsTest, SubmitOnAFetchOnBGivesTheSingleProcessBits) {
   const remote::SmoothJobOptions job;
   absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, job);
   ASSERT_TRUE(submitted.ok()) << submitted.status();
-  std::vector<v1::ProgressEvent> events;
-  ASSERT_TRUE(replicas_[1]
-                  .client
-                  ->WatchJob(submitted->job_id(),
-                             [&](const v1::ProgressEvent& event) { events.push_back(event); })
-                  .ok());
-  ASSERT_FALSE(events.empty());
-  EXPECT_TRUE(events.back().final());
+  absl::StatusOr<std::vector<v1::ProgressEvent>> events =
+      WatchToTheEnd(replicas_[1], submitted->job_id());
+  ASSERT_TRUE(events.ok()) << events.status();
+  ASSERT_FALSE(events->empty());
+  EXPECT_TRUE(events->back().final());
   absl::StatusOr<remote::RemoteSmoothResult> result =
       replicas_[1].client->GetResult(submitted->job_id());
   ASSERT_TRUE(result.ok()) << result.status();
