@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -63,7 +64,7 @@ class LazyFunctionTable {
     std::call_once(once_, [this] {
       absl::StatusOr<RuntimeLibrary> library = RuntimeLibrary::Open(soname_, format_, package_);
       status_ = library.ok() ? bind_(*library, functions_) : library.status();
-      loaded_ = status_.ok();
+      loaded_.store(status_.ok(), std::memory_order_release);
     });
     return status_;
   }
@@ -71,7 +72,7 @@ class LazyFunctionTable {
   // The bound functions. Only after Load succeeded: called before, it aborts, since every
   // caller would crash on a null function anyway.
   const Functions& Get() const {
-    if (!loaded_) {
+    if (!loaded_.load(std::memory_order_acquire)) {
       std::fprintf(stderr, "getme: a %s function was called before its library was loaded\n",
                    format_);
       std::abort();
@@ -86,7 +87,7 @@ class LazyFunctionTable {
   Binder bind_;
   std::once_flag once_;
   absl::Status status_;
-  bool loaded_ = false;
+  std::atomic<bool> loaded_{false};  // read by Get from any thread
   Functions functions_;
 };
 

@@ -8,8 +8,23 @@
 #include "redis/redis_address.h"
 #include "redis/redis_client.h"
 #include "redis_server_process.h"
+#include "test_certificates.h"
 
 namespace getme::redis::testing {
+
+// A server listening on a TLS port only, with the test certificates (tests/server): its
+// certificate names IP 127.0.0.1 and DNS localhost, signed by the test CA, which also signs the
+// client certificates it accepts (required when `require_client_certificate`).
+inline RedisServerProcess::Options TlsServerOptions(bool require_client_certificate) {
+  const server::testing::TestCertificates& certificates = server::testing::GetTestCertificates();
+  RedisServerProcess::Options options;
+  options.tls =
+      RedisServerProcess::Options::Tls{.cert_file = certificates.server_cert,
+                                       .key_file = certificates.server_key,
+                                       .ca_file = certificates.ca_cert,
+                                       .require_client_certificate = require_client_certificate};
+  return options;
+}
 
 // A fixture with its own redis-server (skipped where redis-server is not installed) and helpers
 // to connect to it.

@@ -20,6 +20,7 @@
 #include "redis/redis_address.h"
 #include "redis/redis_client.h"
 #include "redis_server_process.h"
+#include "redis_server_test.h"
 #include "remote/smoother_client.h"
 #include "run_getme.h"
 #include "server_process.h"
@@ -561,13 +562,9 @@ TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
 class ReplicasOverTlsTest : public ReplicasTest {
  protected:
   RedisServerProcess::Options RedisOptions() const override {
-    const TestCertificates& certificates = GetTestCertificates();
-    RedisServerProcess::Options options;
+    RedisServerProcess::Options options =
+        redis::testing::TlsServerOptions(/*require_client_certificate=*/true);
     options.password = "s3cret";
-    options.tls = RedisServerProcess::Options::Tls{.cert_file = certificates.server_cert,
-                                                   .key_file = certificates.server_key,
-                                                   .ca_file = certificates.ca_cert,
-                                                   .require_client_certificate = true};
     return options;
   }
   std::string StoreUrl() const override {
