@@ -94,7 +94,9 @@ GETME_LANE_INLINE S FastCubeRoot(S x) {
 }  // namespace internal
 
 // ∛x, within one ulp of the exact root; the same bits for a double and for each lane of Lanes.
-inline double CubeRoot(double x) {
+// Forced inline: GCC stopped inlining it into the polish's kernels once they grew, and the call
+// then took a seventh of a polish on knowles-mixed-beam.vtk.
+[[gnu::always_inline]] inline double CubeRoot(double x) {
   const std::uint64_t biased = __builtin_bit_cast(std::uint64_t, x) >> 52;
   if (biased < internal::kCubeRootLowestExponent || biased > internal::kCubeRootHighestExponent) {
     return std::cbrt(x);  // also every negative x: its sign bit makes `biased` ≥ 2048

@@ -41,8 +41,11 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <utility>
 
 #include "getme/elements/cube_root.h"
 #include "getme/elements/element_quality.h"
@@ -64,6 +67,19 @@ struct InverseMeanRatioHessianResult {
   Eigen::Matrix3d hessian;
 };
 
+// Most node tetrahedra of an element (a hexahedron's eight).
+inline constexpr int kMaxNodeTets = 8;
+
+// What each node tetrahedron T_k of one element adds to c(E) and, before the division by K, to
+// q(E): 1/(K·…) aside, the terms CostAndQuality sums, with its bits. A polish step moves one
+// node, which belongs to only some of an element's node tetrahedra (4 of a hexahedron's 8, 4 of
+// a prism's 6): its trials recompute those and take the others from here
+// (CostAndQualityMovingNode), so they cost half as much on hexahedra and give the same bits.
+struct NodeTetTerms {
+  std::array<double, kMaxNodeTets> cost;     // |S_k|_F² / (3 det(S_k)^{2/3}) = 1/q_k
+  std::array<double, kMaxNodeTets> quality;  // 3 det(S_k)^{2/3} / |S_k|_F² = q_k
+};
+
 namespace internal {
 
 // One node tetrahedron T_k = (t_0, t_1, t_2, t_3) of an element: its edges from t_0, d1 × d2, the
@@ -79,8 +95,8 @@ struct NodeTetFrame {
 // False, with `f` only partly set, where the node tetrahedron is not positively oriented (or a
 // coordinate is NaN): the element is invalid (Def. 2).
 template <ElementType kType>
-inline bool MakeNodeTetFrame(const ElementNodes<kType>& p, const NodeTetIndices& t,
-                             NodeTetFrame& f) {
+[[gnu::always_inline]] inline bool MakeNodeTetFrame(const ElementNodes<kType>& p,
+                                                    const NodeTetIndices& t, NodeTetFrame& f) {
   constexpr auto& w = ElementTable<kType>::kTargetInverse;
   // The columns of S below and det S = det D · w00 w11 w22 rely on W⁻¹ being upper triangular.
   static_assert(w[1][0] == 0.0 && w[2][0] == 0.0 && w[2][1] == 0.0);
@@ -103,9 +119,11 @@ inline bool MakeNodeTetFrame(const ElementNodes<kType>& p, const NodeTetIndices&
 // the gradient and Hessian are left zero: they carry no information past the barrier, and a
 // caller must test std::isfinite(cost) before using them. A node index outside
 // 0..NodeCount(type)−1 belongs to no node tetrahedron and gets zero derivatives.
+// With `terms`, also each node tetrahedron's terms of c(E) and q(E) (NodeTetTerms; left partly
+// set for an invalid element).
 template <ElementType kType, int kOrder>
 inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3* gradient,
-                                    Eigen::Matrix3d* hessian) {
+                                    Eigen::Matrix3d* hessian, NodeTetTerms* terms = nullptr) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
   constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
@@ -115,7 +133,8 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
   double sum = 0.0;
   Vec3 g = Vec3::Zero();
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
-  for (const auto& t : Table::kNodeTets) {
+  for (int k = 0; k < kTets; ++k) {
+    const NodeTetIndices& t = Table::kNodeTets[k];
     NodeTetFrame frame;
     if (!MakeNodeTetFrame<kType>(p, t, frame)) {
       if constexpr (kOrder >= 1) gradient->setZero();
@@ -123,8 +142,15 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
       return kInfinity;
     }
     const auto& [d0, d1, d2, d1xd2, s0, s1, s2, det_s, frobenius2] = frame;
-    const double a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
-    sum += frobenius2 * a;
+    // The operations of CostAndQuality, so that both have the same bits.
+    const double root = CubeRoot(det_s * det_s);
+    const double a = 1.0 / (3.0 * root);
+    const double inverse_q = frobenius2 * a;
+    sum += inverse_q;
+    if (terms != nullptr) {
+      terms->cost[k] = inverse_q;
+      terms->quality[k] = 3.0 * root / frobenius2;
+    }
     if constexpr (kOrder >= 1) {
       int m = -1;
       for (int j = 0; j < 4; ++j) {
@@ -201,6 +227,61 @@ inline InverseMeanRatioCostAndQuality CostAndQuality(const ElementNodes<kType>& 
   return {cost * (1.0 / kTets), std::clamp(quality, 0.0, 1.0)};
 }
 
+namespace internal {
+
+// Bit k set where node tetrahedron k of kType contains local node `node`.
+template <ElementType kType>
+constexpr unsigned NodeTetsContaining(int node) {
+  unsigned mask = 0;
+  for (std::size_t k = 0; k < ElementTable<kType>::kNodeTets.size(); ++k) {
+    for (int m : ElementTable<kType>::kNodeTets[k]) {
+      if (m == node) mask |= 1u << k;
+    }
+  }
+  return mask;
+}
+
+template <ElementType kType, std::size_t... kNodes>
+constexpr auto NodeTetMasks(std::index_sequence<kNodes...>) {
+  return std::array<unsigned, sizeof...(kNodes)>{NodeTetsContaining<kType>(kNodes)...};
+}
+
+}  // namespace internal
+
+// CostAndQuality of an element of which only local node `node` moved since `before` was taken
+// (InverseMeanRatioHessian's `terms`, at a position where the element was valid): the node
+// tetrahedra without the node are taken from `before`, the others recomputed, and all summed in
+// CostAndQuality's order, so the result has its bits.
+template <ElementType kType>
+inline InverseMeanRatioCostAndQuality CostAndQualityMovingNode(const ElementNodes<kType>& p,
+                                                               int node,
+                                                               const NodeTetTerms& before) {
+  using Table = ElementTable<kType>;
+  constexpr int kNodeTetCount = static_cast<int>(Table::kNodeTets.size());
+  constexpr double kTets = static_cast<double>(kNodeTetCount);
+  static constexpr auto kMasks =
+      internal::NodeTetMasks<kType>(std::make_index_sequence<Table::kNodes>());
+  const unsigned moved = kMasks[node];
+  double cost = 0.0;
+  double quality = 0.0;
+  for (int k = 0; k < kNodeTetCount; ++k) {
+    if ((moved >> k & 1u) == 0) {
+      cost += before.cost[k];
+      quality += before.quality[k];
+      continue;
+    }
+    internal::NodeTetFrame frame;
+    if (!internal::MakeNodeTetFrame<kType>(p, Table::kNodeTets[k], frame)) {
+      return {std::numeric_limits<double>::infinity(), kInvalidQuality};
+    }
+    const double root = CubeRoot(frame.det_s * frame.det_s);
+    cost += frame.frobenius2 * (1.0 / (3.0 * root));
+    quality += 3.0 * root / frame.frobenius2;
+  }
+  quality /= kTets;
+  return {cost * (1.0 / kTets), std::clamp(quality, 0.0, 1.0)};
+}
+
 // c(E) and ∂c/∂p_node. Past the barrier (cost +∞) the gradient is zero.
 template <ElementType kType>
 inline InverseMeanRatioGradientResult InverseMeanRatioGradient(const ElementNodes<kType>& p,
@@ -212,12 +293,13 @@ inline InverseMeanRatioGradientResult InverseMeanRatioGradient(const ElementNode
 
 // c(E), ∂c/∂p_node and ∂²c/∂p_node² (symmetric, positive semi-definite where c is finite). Past
 // the barrier (cost +∞) gradient and Hessian are zero.
+// With `terms`, also each node tetrahedron's terms, for CostAndQualityMovingNode.
 template <ElementType kType>
-inline InverseMeanRatioHessianResult InverseMeanRatioHessian(const ElementNodes<kType>& p,
-                                                             int node) {
+inline InverseMeanRatioHessianResult InverseMeanRatioHessian(const ElementNodes<kType>& p, int node,
+                                                             NodeTetTerms* terms = nullptr) {
   InverseMeanRatioHessianResult result;
   result.cost =
-      internal::InverseMeanRatioTerms<kType, 2>(p, node, &result.gradient, &result.hessian);
+      internal::InverseMeanRatioTerms<kType, 2>(p, node, &result.gradient, &result.hessian, terms);
   return result;
 }
 

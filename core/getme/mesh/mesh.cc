@@ -85,14 +85,6 @@ std::vector<FaceKey> SortFaces(const std::vector<FaceKey>& faces, std::int64_t n
 
 }  // namespace
 
-std::span<const NodeId> Mesh::element_nodes(ElementId element) const {
-  const ElementType element_type = element_type_[element];
-  const int n = NodeCount(element_type);
-  const auto& nodes = blocks_[TypeIndex(element_type)].nodes;
-  return {nodes.data() + static_cast<std::int64_t>(block_index_[element]) * n,
-          static_cast<std::size_t>(n)};
-}
-
 std::span<const ElementId> Mesh::element_neighbours(ElementId element) const {
   std::call_once(element_neighbours_->built, [&] {
     CompressedRows& table = element_neighbours_->rows;

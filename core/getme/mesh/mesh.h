@@ -60,7 +60,15 @@ class Mesh {
   // Position of the element inside its type block.
   std::int32_t block_index(ElementId element) const { return block_index_[element]; }
   const ElementBlock& block(ElementType type) const { return blocks_[TypeIndex(type)]; }
-  std::span<const NodeId> element_nodes(ElementId element) const;
+  // In the header: the polish and the sequential substep call it for every element around every
+  // node they step, and out of line the call was 4 % of a default run on cub_wedge_like.vtk.
+  std::span<const NodeId> element_nodes(ElementId element) const {
+    const ElementType element_type = element_type_[element];
+    const int n = NodeCount(element_type);
+    const auto& nodes = blocks_[TypeIndex(element_type)].nodes;
+    return {nodes.data() + static_cast<std::int64_t>(block_index_[element]) * n,
+            static_cast<std::size_t>(n)};
+  }
 
   // Caller-fixed nodes (e.g. a file's `fixed` point data). Boundary nodes are separate; which
   // nodes a smoother moves is decided by its parameters (fix_boundary).

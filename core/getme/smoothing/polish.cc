@@ -6,11 +6,13 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "getme/elements/element_quality.h"
 #include "getme/elements/mean_ratio_derivatives.h"
 #include "getme/elements/vec3.h"
+#include "getme/mesh/local_index.h"
 #include "getme/mesh/node_colouring.h"
 #include "getme/mesh/node_positions.h"
 #include "getme/parallel/block_loops.h"
@@ -34,13 +36,6 @@ constexpr double kMaxGainRatio = 0.95;
 // The mean stage stops once the q_mean still to gain is below this share of 1 − q_mean (or below
 // polish_tolerance, whichever is smaller).
 constexpr double kDefectShare = 0.01;
-
-int LocalIndex(std::span<const NodeId> nodes, NodeId node) {
-  for (int k = 0; k < static_cast<int>(nodes.size()); ++k) {
-    if (nodes[k] == node) return k;
-  }
-  return -1;
-}
 
 // The per-element qualities one node step writes before it is accepted. Nodes of one colour share
 // no element, so their writes never meet: no allocation per node.
@@ -71,6 +66,34 @@ struct PolishState {
 
 enum class NodeStep { kSkipped, kConverged, kRefused, kMoved };
 
+// Software prefetch for the node steps to come. A colour's nodes lie scattered over the mesh, so
+// each step starts with cache misses on the node's element row, its elements' node lists and
+// their coordinates: on cub_wedge_like.vtk the first read of an element's node list was an eighth
+// of the whole run. Two steps ahead the row is fetched, one step ahead the node lists it names.
+void PrefetchElementRow(const Mesh& mesh, NodeId node) {
+  const std::span<const ElementId> row = mesh.node_elements(node);
+  __builtin_prefetch(row.data());
+  __builtin_prefetch(row.data() + row.size() - 1);
+}
+
+void PrefetchElementNodes(const Mesh& mesh, NodeId node) {
+  for (ElementId e : mesh.node_elements(node)) __builtin_prefetch(mesh.element_nodes(e).data());
+}
+
+// Per element around the node being stepped, in its node_elements row's order: the node's local
+// index and the node tetrahedra's terms at the step's start, which the trials reuse for the node
+// tetrahedra the node is not in (CostAndQualityMovingNode).
+struct ElementAtStepStart {
+  int local = -1;
+  NodeTetTerms terms;
+};
+
+// One per thread, grown to the largest valence seen: a node step allocates nothing.
+std::vector<ElementAtStepStart>& StepStartScratch() {
+  thread_local std::vector<ElementAtStepStart> scratch;
+  return scratch;
+}
+
 // c^p. Whole exponents (the default 6) by repeated squaring: std::pow was a tenth of a polish's
 // time, and c^(p−1), c^(p−2) for the derivatives come from the same products. Other exponents
 // fall back to std::pow; 1 returns c itself, so the mean stage never depends on either.
@@ -97,18 +120,21 @@ double Powered(double cost, double exponent) {
 // The summed cost Σ c(E)^p, gradient and Hessian of `node`'s elements with respect to the node,
 // in the fixed order of its node_elements row. With p ≠ 1 by the chain rule:
 // ∇c^p = p c^{p−1} ∇c, ∇²c^p = p c^{p−1} ∇²c + p (p − 1) c^{p−2} ∇c ∇cᵀ (positive semi-definite
-// where ∇²c is, for p ≥ 1). False if an element is already past the barrier.
+// where ∇²c is, for p ≥ 1). Fills `start` (one entry per element) for the trials. False if an
+// element is already past the barrier.
 bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cost, Vec3& gradient,
-                     Eigen::Matrix3d& hessian) {
+                     Eigen::Matrix3d& hessian, std::span<ElementAtStepStart> start) {
   cost = 0.0;
   gradient.setZero();
   hessian.setZero();
-  for (ElementId e : mesh.node_elements(node)) {
-    const std::span<const NodeId> ids = mesh.element_nodes(e);
-    const int local = LocalIndex(ids, node);
-    const bool finite = DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
-      const InverseMeanRatioHessianResult r =
-          InverseMeanRatioHessian<kType>(GatherNodes<kType>(mesh, ids.data()), local);
+  const std::span<const ElementId> elements = mesh.node_elements(node);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::span<const NodeId> ids = mesh.element_nodes(elements[i]);
+    const bool finite = DispatchElementType(mesh.type(elements[i]), [&]<ElementType kType>() {
+      const int local = LocalIndex<kType>(ids.data(), node);
+      start[i].local = local;
+      const InverseMeanRatioHessianResult r = InverseMeanRatioHessian<kType>(
+          GatherNodes<kType>(mesh, ids.data()), local, &start[i].terms);
       if (!std::isfinite(r.cost)) return false;
       if (exponent == 1.0) {
         cost += r.cost;
@@ -130,14 +156,19 @@ bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cos
 }
 
 // Evaluates the node's elements at the node's current position into the trial arrays; returns
-// false as soon as one is invalid (Def. 2), i.e. past the cost barrier.
-bool EvaluateTrial(const Mesh& mesh, NodeId node, PolishState& state, double& cost, double& q_min) {
+// false as soon as one is invalid (Def. 2), i.e. past the cost barrier. Only the node has moved
+// since NodeDerivatives filled `start`.
+bool EvaluateTrial(const Mesh& mesh, NodeId node, std::span<const ElementAtStepStart> start,
+                   PolishState& state, double& cost, double& q_min) {
   cost = 0.0;
   q_min = std::numeric_limits<double>::infinity();
-  for (ElementId e : mesh.node_elements(node)) {
+  const std::span<const ElementId> elements = mesh.node_elements(node);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const ElementId e = elements[i];
     const NodeId* ids = mesh.element_nodes(e).data();
     const bool ok = DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
-      const InverseMeanRatioCostAndQuality r = CostAndQuality<kType>(GatherNodes<kType>(mesh, ids));
+      const InverseMeanRatioCostAndQuality r = CostAndQualityMovingNode<kType>(
+          GatherNodes<kType>(mesh, ids), start[i].local, start[i].terms);
       if (r.quality == kInvalidQuality) return false;
       state.trial_quality[e] = r.quality;
       cost += Powered(r.cost, state.exponent);
@@ -175,10 +206,15 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   Mesh& mesh = context.mesh;
   const std::span<const ElementId> elements = mesh.node_elements(node);
   if (elements.empty()) return NodeStep::kConverged;
+  std::vector<ElementAtStepStart>& scratch = StepStartScratch();
+  if (scratch.size() < elements.size()) scratch.resize(elements.size());
+  const std::span<ElementAtStepStart> start_terms(scratch.data(), elements.size());
   double old_cost = 0.0;
   Vec3 g;
   Eigen::Matrix3d h;
-  if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h)) return NodeStep::kRefused;
+  if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h, start_terms)) {
+    return NodeStep::kRefused;
+  }
   if (context.sliding[node]) {
     RestrictToTangent(context, node, g, h);
   }
@@ -229,7 +265,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
     // worst element: holding every node's worst element would freeze the nodes around each
     // locally worst element, and measured on mixed-hex-pyr-tet.vtk that keeps q_mean 0.003 below
     // the optimiser's.
-    if (EvaluateTrial(mesh, node, state, cost, q_min) && cost < old_cost) {
+    if (EvaluateTrial(mesh, node, start_terms, state, cost, q_min) && cost < old_cost) {
       if (q_min >= state.q_floor) {
         for (ElementId e : elements) {
           context.quality[e] = state.trial_quality[e];
@@ -315,6 +351,8 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
         std::int64_t chunk_refused = 0;
         std::int64_t chunk_moved = 0;
         for (std::int64_t i = begin; i < end; ++i) {
+          if (i + 2 < end) PrefetchElementRow(mesh, nodes[i + 2]);
+          if (i + 1 < end) PrefetchElementNodes(mesh, nodes[i + 1]);
           const NodeStep step = PolishNode(context, nodes[i], state);
           chunk_refused += step == NodeStep::kRefused;
           chunk_moved += step == NodeStep::kMoved;

@@ -13,6 +13,7 @@
 #include "getme/elements/element_quality.h"
 #include "getme/elements/transform.h"
 #include "getme/elements/vec3.h"
+#include "getme/mesh/local_index.h"
 #include "getme/mesh/node_colouring.h"
 #include "getme/parallel/block_loops.h"
 
@@ -51,13 +52,6 @@ constexpr double RegularDeterminant() {
   // det W for the unit-edge regular element: the inverse of W⁻¹'s (upper triangular) diagonal.
   constexpr auto& w = ElementTable<kType>::kTargetInverse;
   return 1.0 / (w[0][0] * w[1][1] * w[2][2]);
-}
-
-int LocalIndex(std::span<const NodeId> nodes, NodeId node) {
-  for (int k = 0; k < static_cast<int>(nodes.size()); ++k) {
-    if (nodes[k] == node) return k;
-  }
-  return -1;
 }
 
 // det D(T_k) of node tetrahedron (t0, t1, t2, t3) is (p1 − p0)·((p2 − p0) × (p3 − p0)); with the
@@ -130,9 +124,9 @@ double Untangler::NodeObjective(NodeId node, Vec3* gradient, Eigen::Matrix3d* he
   }
   for (ElementId e : mesh_.node_elements(node)) {
     const std::span<const NodeId> ids = mesh_.element_nodes(e);
-    const int local = LocalIndex(ids, node);
     const double inverse_beta = 1.0 / beta_[e];
     DispatchElementType(mesh_.type(e), [&]<ElementType kType>() {
+      const int local = LocalIndex<kType>(ids.data(), node);
       const ElementNodes<kType> p = GatherNodes<kType>(mesh_, ids.data());
       for (const auto& t : ElementTable<kType>::kNodeTets) {
         int m = 0;
