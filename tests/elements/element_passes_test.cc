@@ -108,6 +108,43 @@ TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
   EXPECT_GT(invalid, 10);
 }
 
+// The list pass (a sequential pick's elements, anywhere in their block): every list length from
+// 1 to past the widest vector, in a scattered order with repeats, must write the one-element bits
+// into the list's own slots and nothing past them.
+TYPED_TEST(ElementPassesTest, MeanRatioListPassGivesTheOneElementBitsAtEveryWidth) {
+  constexpr ElementType kType = TypeParam::kType;
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  const TestBlock<kType> block = MakeBlock<kType>();
+  const auto n = static_cast<std::int64_t>(block.elements.size());
+  // Entries 0, 37, 74, ... modulo n: scattered, and every 413th repeats.
+  std::vector<const NodeId*> node_lists;
+  std::vector<std::int64_t> entries;
+  for (std::int64_t k = 0; k < 2 * n; ++k) {
+    entries.push_back((37 * k) % n);
+    node_lists.push_back(block.nodes.data() + entries.back() * kNodes);
+  }
+  int invalid = 0;
+  for (int lanes : SupportedLaneWidths()) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
+    ASSERT_TRUE(passes.ok()) << passes.status();
+    for (const std::int64_t count : {1, 2, 3, 5, 8, 9, 17, 826}) {
+      std::vector<double> quality(count + 1, std::numeric_limits<double>::quiet_NaN());
+      (*passes)->mean_ratio_list[TypeIndex(kType)](
+          {block.x, block.y, block.z, node_lists.data(), count}, quality.data());
+      for (std::int64_t i = 0; i < count; ++i) {
+        const double expected = MeanRatioOrInvalid<kType>(block.elements[entries[i]]);
+        EXPECT_EQ(Bits(quality[i]), Bits(expected))
+            << "list entry " << i << " (block entry " << entries[i] << "), " << count
+            << " elements: " << quality[i] << " vs " << expected;
+        if (lanes == 2 && count == 826 && expected == kInvalidQuality) ++invalid;
+      }
+      EXPECT_TRUE(std::isnan(quality[count])) << "the slot past " << count << " was written";
+    }
+  }
+  EXPECT_GT(invalid, 10);
+}
+
 // A block whose elements share nodes: kNodes distinct nodes each, drawn from a pool of 90 random
 // points, so most nodes collect contributions from many elements and the order they are added in
 // shows in the last bits.

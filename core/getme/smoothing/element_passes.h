@@ -80,6 +80,28 @@ void MeanRatioPass(const BlockRange& range, double* quality) {
   }
 }
 
+// A list of elements of one type, anywhere in their block: the elements a sequential pick
+// evaluates (Sec. 3.2, Step 3.1).
+struct ElementList {
+  std::span<const double> x, y, z;
+  const NodeId* const* node_lists = nullptr;  // per element: its kNodes node ids
+  std::int64_t count = 0;
+};
+
+// quality[i] = MeanRatioOrInvalid of the list's element i.
+template <ElementType kType, int kWidth>
+void MeanRatioListPass(const ElementList& list, double* quality) {
+  for (std::int64_t i = 0; i < list.count; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
+    // Lanes past `count` repeat the last element; their results are dropped.
+    const NodeId* lane_nodes[kWidth];
+    for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
+    const LanesOf<kWidth> q = MeanRatioOrInvalid<kType, LanesOf<kWidth>>(
+        GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+    for (int l = 0; l < count; ++l) quality[i + l] = q[l];
+  }
+}
+
 // Step 1 on the entries [range.begin, range.end) of one type block (or of a reordering of it,
 // parallel/element_tiles.h): transform each element with its σ_j, scale and relax it, and add
 // w_j·p'_{i,j} and w_j to the sums of its nodes (Step 2's numerators and denominators). The

@@ -47,6 +47,11 @@ template <ElementType kType>
   ScatterTransformPass<kType, kTargetLanes>(range, settings);
 }
 
+template <ElementType kType>
+[[gnu::flatten]] void MeanRatioOfList(const ElementList& list, double* quality) {
+  MeanRatioListPass<kType, kTargetLanes>(list, quality);
+}
+
 extern const ElementPasses kTargetPasses;
 const ElementPasses kTargetPasses = {
     kTargetLanes,
@@ -56,6 +61,8 @@ const ElementPasses kTargetPasses = {
      &ScatterTransformOfRange<ElementType::kHexahedron>,
      &ScatterTransformOfRange<ElementType::kPyramid>,
      &ScatterTransformOfRange<ElementType::kPrism>},
+    {&MeanRatioOfList<ElementType::kTetrahedron>, &MeanRatioOfList<ElementType::kHexahedron>,
+     &MeanRatioOfList<ElementType::kPyramid>, &MeanRatioOfList<ElementType::kPrism>},
 };
 
 }  // namespace HWY_NAMESPACE
@@ -79,6 +86,10 @@ const ElementPasses kReferencePasses = {
      &ScatterTransformPass<ElementType::kHexahedron, kLanes>,
      &ScatterTransformPass<ElementType::kPyramid, kLanes>,
      &ScatterTransformPass<ElementType::kPrism, kLanes>},
+    {&MeanRatioListPass<ElementType::kTetrahedron, kLanes>,
+     &MeanRatioListPass<ElementType::kHexahedron, kLanes>,
+     &MeanRatioListPass<ElementType::kPyramid, kLanes>,
+     &MeanRatioListPass<ElementType::kPrism, kLanes>},
 };
 
 // Widest first.

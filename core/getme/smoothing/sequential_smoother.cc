@@ -46,6 +46,7 @@ struct PickWork {
   std::vector<NodeBackup> target;
   std::vector<ElementId> affected;  // the element, then its neighbours through movable nodes
   std::vector<double> affected_quality;
+  std::vector<const NodeId*> node_lists;  // scratch of SmoothingContext::QualitiesOf
   std::vector<double> quality_gain;  // per affected element: its new q − its old q (invalid as 0)
   std::vector<HeapUpdate> heap_updates;
   ElementNeighbourFinder neighbour_finder;
@@ -273,9 +274,11 @@ void SequentialSubstep::RunPick(PickWork& work) {
       y[from.node] = placed[1];
       z[from.node] = placed[2];
     }
+    // All of them at once, several side by side (element_passes.h); the first invalid one in
+    // the list is the blocker, as when they were evaluated one by one up to it.
+    context_.QualitiesOf(work.affected, work.node_lists, work.affected_quality);
     valid = true;
     for (std::size_t i = 0; i < work.affected.size() && valid; ++i) {
-      work.affected_quality[i] = ElementQualityOrInvalid(mesh_, work.affected[i]);
       valid = work.affected_quality[i] >= 0.0;
       if (!valid && params_.sequential_transform_blockers &&
           selection_.contains(mesh_.canonical_rank(work.affected[i]))) {

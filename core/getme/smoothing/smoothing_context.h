@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "getme/elements/element_quality.h"
@@ -63,6 +64,11 @@ struct SmoothingContext {
   }
   // Recomputes `quality` for the whole mesh.
   void RefreshQuality();
+  // quality_out[i] = the mean ratio or kInvalidQuality of elements[i], computed passes.lanes
+  // elements at a time within each run of one type (the same bits as ElementQualityOrInvalid).
+  // `node_lists` is the caller's scratch, one entry per element.
+  void QualitiesOf(std::span<const ElementId> elements, std::vector<const NodeId*>& node_lists,
+                   std::span<double> quality_out) const;
   // q_min and q_mean of `quality` with invalid elements as 0, and the invalid count.
   using Summary = QualitySummary;
   Summary Summarize() const { return SummarizeQualities(quality, mesh.canonical_order(), pool); }
