@@ -15,6 +15,7 @@
 
 #include "element_type_tags.h"
 #include "getme/elements/element_quality.h"
+#include "getme/elements/mean_ratio_derivatives.h"
 #include "getme/elements/transform.h"
 #include "getme/smoothing/element_passes_dispatch.h"
 #include "random_elements.h"
@@ -140,6 +141,47 @@ TYPED_TEST(ElementPassesTest, MeanRatioListPassGivesTheOneElementBitsAtEveryWidt
         if (lanes == 2 && count == 826 && expected == kInvalidQuality) ++invalid;
       }
       EXPECT_TRUE(std::isnan(quality[count])) << "the slot past " << count << " was written";
+    }
+  }
+  EXPECT_GT(invalid, 10);
+}
+
+// The polish's trials evaluate a node's elements through the cost-and-quality list pass: each
+// must get the one-element CostAndQuality's bits (mean_ratio_derivatives.h), invalid ones
+// included, at every width.
+TYPED_TEST(ElementPassesTest, CostAndQualityListPassGivesTheOneElementBitsAtEveryWidth) {
+  constexpr ElementType kType = TypeParam::kType;
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  const TestBlock<kType> block = MakeBlock<kType>();
+  const auto n = static_cast<std::int64_t>(block.elements.size());
+  std::vector<const NodeId*> node_lists;
+  std::vector<std::int64_t> entries;
+  for (std::int64_t k = 0; k < n; ++k) {
+    entries.push_back((53 * k) % n);
+    node_lists.push_back(block.nodes.data() + entries.back() * kNodes);
+  }
+  int invalid = 0;
+  for (int lanes : SupportedLaneWidths()) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
+    ASSERT_TRUE(passes.ok()) << passes.status();
+    for (const std::int64_t count :
+         {std::int64_t{1}, std::int64_t{3}, std::int64_t{7}, std::int64_t{9}, n}) {
+      std::vector<double> cost(count + 1, std::numeric_limits<double>::quiet_NaN());
+      std::vector<double> quality(count + 1, std::numeric_limits<double>::quiet_NaN());
+      (*passes)->cost_and_quality_list[TypeIndex(kType)](
+          {block.x, block.y, block.z, node_lists.data(), count}, cost.data(), quality.data());
+      for (std::int64_t i = 0; i < count; ++i) {
+        const InverseMeanRatioCostAndQuality expected =
+            CostAndQuality<kType>(block.elements[entries[i]]);
+        EXPECT_EQ(Bits(quality[i]), Bits(expected.quality))
+            << "list entry " << i << ": " << quality[i] << " vs " << expected.quality;
+        EXPECT_EQ(Bits(cost[i]), Bits(expected.cost))
+            << "list entry " << i << ": " << cost[i] << " vs " << expected.cost;
+        if (lanes == 2 && count == n && expected.quality == kInvalidQuality) ++invalid;
+      }
+      EXPECT_TRUE(std::isnan(quality[count]) && std::isnan(cost[count]))
+          << "the slot past " << count << " was written";
     }
   }
   EXPECT_GT(invalid, 10);

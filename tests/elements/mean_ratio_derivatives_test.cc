@@ -323,50 +323,6 @@ TYPED_TEST(MeanRatioDerivativesTest, CostAndQualityEqualTheSeparateFunctionsBitF
   EXPECT_LT(invalid, kDerivativeTrials);
 }
 
-// A polish trial moves one node and recomputes only the node tetrahedra it is in, taking the
-// others from the step's start (CostAndQualityMovingNode): every node of every type, moved by
-// small and by inverting steps, must give CostAndQuality's bits, inverted elements included.
-TYPED_TEST(MeanRatioDerivativesTest, MovingOneNodeGivesCostAndQualityBitForBit) {
-  constexpr ElementType kType = TypeParam::kType;
-  UnitRandom random(1409 + TypeIndex(kType));
-  int invalid = 0;
-  int checked = 0;
-  for (int trial = 0; trial < kDerivativeTrials; ++trial) {
-    const ElementNodes<kType> start = TrialElement<kType>(random, trial);
-    for (int node = 0; node < NodeCount(kType); ++node) {
-      NodeTetTerms terms;
-      const InverseMeanRatioHessianResult at_start =
-          InverseMeanRatioHessian<kType>(start, node, &terms);
-      // The terms the Hessian recorded sum to its cost, and each is 1/q_k of the other.
-      const int tets = static_cast<int>(ElementTable<kType>::kNodeTets.size());
-      double cost_sum = 0.0;
-      for (int k = 0; k < tets; ++k) {
-        cost_sum += terms.cost[k];
-        EXPECT_NEAR(terms.cost[k] * terms.quality[k], 1.0, 1e-12) << "trial " << trial;
-      }
-      EXPECT_EQ(cost_sum * (1.0 / tets), at_start.cost) << "trial " << trial << " node " << node;
-      // Unmoved, small moves, and a move of twice the element's size (often inverting).
-      for (const double scale : {0.0, 1e-3, 0.1, 2.0}) {
-        const Vec3 delta(random.Uniform(-scale, scale), random.Uniform(-scale, scale),
-                         random.Uniform(-scale, scale));
-        const ElementNodes<kType> moved = Moved<kType>(start, node, delta);
-        const InverseMeanRatioCostAndQuality expected = CostAndQuality<kType>(moved);
-        const InverseMeanRatioCostAndQuality got =
-            CostAndQualityMovingNode<kType>(moved, node, terms);
-        EXPECT_EQ(got.quality, expected.quality)
-            << "trial " << trial << " node " << node << " scale " << scale;
-        EXPECT_EQ(got.cost, expected.cost)
-            << "trial " << trial << " node " << node << " scale " << scale;
-        invalid += expected.quality == kInvalidQuality;
-        ++checked;
-      }
-    }
-  }
-  // Both branches ran.
-  EXPECT_GT(invalid, 0);
-  EXPECT_LT(invalid, checked);
-}
-
 // Each node tetrahedron of a regular element (unit edges) is the target W up to a rotation
 // R_k (S_k = R_k), where 1/q_k takes its minimum 1: cost 1 and zero gradient at every node. There
 // the header's Hessian reduces to (1/3)(2|b|² I + (2/3) u uᵗ) per node tetrahedron, u = R_k b with

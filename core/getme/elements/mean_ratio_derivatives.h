@@ -41,11 +41,8 @@
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstddef>
 #include <limits>
-#include <utility>
 
 #include "getme/elements/cube_root.h"
 #include "getme/elements/element_quality.h"
@@ -65,19 +62,6 @@ struct InverseMeanRatioHessianResult {
   double cost;
   Vec3 gradient;
   Eigen::Matrix3d hessian;
-};
-
-// Most node tetrahedra of an element (a hexahedron's eight).
-inline constexpr int kMaxNodeTets = 8;
-
-// What each node tetrahedron T_k of one element adds to c(E) and, before the division by K, to
-// q(E): 1/(K·…) aside, the terms CostAndQuality sums, with its bits. A polish step moves one
-// node, which belongs to only some of an element's node tetrahedra (4 of a hexahedron's 8, 4 of
-// a prism's 6): its trials recompute those and take the others from here
-// (CostAndQualityMovingNode), so they cost half as much on hexahedra and give the same bits.
-struct NodeTetTerms {
-  std::array<double, kMaxNodeTets> cost;     // |S_k|_F² / (3 det(S_k)^{2/3}) = 1/q_k
-  std::array<double, kMaxNodeTets> quality;  // 3 det(S_k)^{2/3} / |S_k|_F² = q_k
 };
 
 namespace internal {
@@ -119,11 +103,9 @@ template <ElementType kType>
 // the gradient and Hessian are left zero: they carry no information past the barrier, and a
 // caller must test std::isfinite(cost) before using them. A node index outside
 // 0..NodeCount(type)−1 belongs to no node tetrahedron and gets zero derivatives.
-// With `terms`, also each node tetrahedron's terms of c(E) and q(E) (NodeTetTerms; left partly
-// set for an invalid element).
 template <ElementType kType, int kOrder>
 inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3* gradient,
-                                    Eigen::Matrix3d* hessian, NodeTetTerms* terms = nullptr) {
+                                    Eigen::Matrix3d* hessian) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
   constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
@@ -133,8 +115,7 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
   double sum = 0.0;
   Vec3 g = Vec3::Zero();
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
-  for (int k = 0; k < kTets; ++k) {
-    const NodeTetIndices& t = Table::kNodeTets[k];
+  for (const auto& t : Table::kNodeTets) {
     NodeTetFrame frame;
     if (!MakeNodeTetFrame<kType>(p, t, frame)) {
       if constexpr (kOrder >= 1) gradient->setZero();
@@ -142,15 +123,8 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
       return kInfinity;
     }
     const auto& [d0, d1, d2, d1xd2, s0, s1, s2, det_s, frobenius2] = frame;
-    // The operations of CostAndQuality, so that both have the same bits.
-    const double root = CubeRoot(det_s * det_s);
-    const double a = 1.0 / (3.0 * root);
-    const double inverse_q = frobenius2 * a;
-    sum += inverse_q;
-    if (terms != nullptr) {
-      terms->cost[k] = inverse_q;
-      terms->quality[k] = 3.0 * root / frobenius2;
-    }
+    const double a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
+    sum += frobenius2 * a;
     if constexpr (kOrder >= 1) {
       int m = -1;
       for (int j = 0; j < 4; ++j) {
@@ -206,80 +180,51 @@ struct InverseMeanRatioCostAndQuality {
   double quality;
 };
 
-template <ElementType kType>
-inline InverseMeanRatioCostAndQuality CostAndQuality(const ElementNodes<kType>& p) {
+// The same over lanes (lanes.h): kLaneCount<S> elements side by side, each lane with the bits
+// the one-element function gives, so a polish trial can evaluate a node's elements several at a
+// time (element_passes.h, CostAndQualityListPass).
+template <typename S>
+struct InverseMeanRatioCostAndQualityOf {
+  S cost;
+  S quality;
+};
+
+template <ElementType kType, typename S>
+GETME_LANE_INLINE InverseMeanRatioCostAndQualityOf<S> CostAndQuality(const LaneNodes<kType, S>& p) {
   using Table = ElementTable<kType>;
+  constexpr auto& w = Table::kTargetInverse;
   constexpr double kTets = static_cast<double>(Table::kNodeTets.size());
-  double cost = 0.0;
-  double quality = 0.0;
+  S cost = Splat<S>(0.0);
+  S quality = Splat<S>(0.0);
+  auto valid = AllLanes<S>();
   for (const auto& t : Table::kNodeTets) {
-    internal::NodeTetFrame frame;
-    if (!internal::MakeNodeTetFrame<kType>(p, t, frame)) {
-      return {std::numeric_limits<double>::infinity(), kInvalidQuality};
-    }
-    const double det_s = frame.det_s;
-    const double frobenius2 = frame.frobenius2;
-    const double root = CubeRoot(det_s * det_s);
+    // MakeNodeTetFrame's operations, in its order.
+    const Point3<S> d0 = p[t[1]] - p[t[0]];
+    const Point3<S> d1 = p[t[2]] - p[t[0]];
+    const Point3<S> d2 = p[t[3]] - p[t[0]];
+    const S det_d = Dot(d0, Cross(d1, d2));
+    valid = Both(valid, det_d > 0.0);
+    const Point3<S> s0 = d0 * w[0][0];
+    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
+    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
+    const S det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
+    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
+    const S root = CubeRoot(det_s * det_s);
     cost += frobenius2 * (1.0 / (3.0 * root));
     quality += 3.0 * root / frobenius2;
   }
   quality /= kTets;
-  return {cost * (1.0 / kTets), std::clamp(quality, 0.0, 1.0)};
+  const S clamped =
+      Select(quality < 0.0, Splat<S>(0.0), Select(1.0 < quality, Splat<S>(1.0), quality));
+  return {Select(valid, cost * (1.0 / kTets), Splat<S>(std::numeric_limits<double>::infinity())),
+          Select(valid, clamped, Splat<S>(kInvalidQuality))};
 }
 
-namespace internal {
-
-// Bit k set where node tetrahedron k of kType contains local node `node`.
 template <ElementType kType>
-constexpr unsigned NodeTetsContaining(int node) {
-  unsigned mask = 0;
-  for (std::size_t k = 0; k < ElementTable<kType>::kNodeTets.size(); ++k) {
-    for (int m : ElementTable<kType>::kNodeTets[k]) {
-      if (m == node) mask |= 1u << k;
-    }
-  }
-  return mask;
-}
-
-template <ElementType kType, std::size_t... kNodes>
-constexpr auto NodeTetMasks(std::index_sequence<kNodes...>) {
-  return std::array<unsigned, sizeof...(kNodes)>{NodeTetsContaining<kType>(kNodes)...};
-}
-
-}  // namespace internal
-
-// CostAndQuality of an element of which only local node `node` moved since `before` was taken
-// (InverseMeanRatioHessian's `terms`, at a position where the element was valid): the node
-// tetrahedra without the node are taken from `before`, the others recomputed, and all summed in
-// CostAndQuality's order, so the result has its bits.
-template <ElementType kType>
-inline InverseMeanRatioCostAndQuality CostAndQualityMovingNode(const ElementNodes<kType>& p,
-                                                               int node,
-                                                               const NodeTetTerms& before) {
-  using Table = ElementTable<kType>;
-  constexpr int kNodeTetCount = static_cast<int>(Table::kNodeTets.size());
-  constexpr double kTets = static_cast<double>(kNodeTetCount);
-  static constexpr auto kMasks =
-      internal::NodeTetMasks<kType>(std::make_index_sequence<Table::kNodes>());
-  const unsigned moved = kMasks[node];
-  double cost = 0.0;
-  double quality = 0.0;
-  for (int k = 0; k < kNodeTetCount; ++k) {
-    if ((moved >> k & 1u) == 0) {
-      cost += before.cost[k];
-      quality += before.quality[k];
-      continue;
-    }
-    internal::NodeTetFrame frame;
-    if (!internal::MakeNodeTetFrame<kType>(p, Table::kNodeTets[k], frame)) {
-      return {std::numeric_limits<double>::infinity(), kInvalidQuality};
-    }
-    const double root = CubeRoot(frame.det_s * frame.det_s);
-    cost += frame.frobenius2 * (1.0 / (3.0 * root));
-    quality += 3.0 * root / frame.frobenius2;
-  }
-  quality /= kTets;
-  return {cost * (1.0 / kTets), std::clamp(quality, 0.0, 1.0)};
+inline InverseMeanRatioCostAndQuality CostAndQuality(const ElementNodes<kType>& p) {
+  const InverseMeanRatioCostAndQualityOf<double> r =
+      CostAndQuality<kType, double>(ToLaneNodes<kType>(p));
+  return {r.cost, r.quality};
 }
 
 // c(E) and ∂c/∂p_node. Past the barrier (cost +∞) the gradient is zero.
@@ -293,13 +238,12 @@ inline InverseMeanRatioGradientResult InverseMeanRatioGradient(const ElementNode
 
 // c(E), ∂c/∂p_node and ∂²c/∂p_node² (symmetric, positive semi-definite where c is finite). Past
 // the barrier (cost +∞) gradient and Hessian are zero.
-// With `terms`, also each node tetrahedron's terms, for CostAndQualityMovingNode.
 template <ElementType kType>
-inline InverseMeanRatioHessianResult InverseMeanRatioHessian(const ElementNodes<kType>& p, int node,
-                                                             NodeTetTerms* terms = nullptr) {
+inline InverseMeanRatioHessianResult InverseMeanRatioHessian(const ElementNodes<kType>& p,
+                                                             int node) {
   InverseMeanRatioHessianResult result;
   result.cost =
-      internal::InverseMeanRatioTerms<kType, 2>(p, node, &result.gradient, &result.hessian, terms);
+      internal::InverseMeanRatioTerms<kType, 2>(p, node, &result.gradient, &result.hessian);
   return result;
 }
 

@@ -22,6 +22,7 @@
 
 #include "getme/elements/element_quality.h"
 #include "getme/elements/lanes.h"
+#include "getme/elements/mean_ratio_derivatives.h"
 #include "getme/elements/transform.h"
 #include "getme/elements/vec3.h"
 
@@ -99,6 +100,24 @@ void MeanRatioListPass(const ElementList& list, double* quality) {
     const LanesOf<kWidth> q = MeanRatioOrInvalid<kType, LanesOf<kWidth>>(
         GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
     for (int l = 0; l < count; ++l) quality[i + l] = q[l];
+  }
+}
+
+// cost[i] and quality[i] = CostAndQuality of the list's element i (mean_ratio_derivatives.h):
+// a polish trial's elements, around the node it moved.
+template <ElementType kType, int kWidth>
+void CostAndQualityListPass(const ElementList& list, double* cost, double* quality) {
+  for (std::int64_t i = 0; i < list.count; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
+    const NodeId* lane_nodes[kWidth];
+    for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
+    const InverseMeanRatioCostAndQualityOf<LanesOf<kWidth>> r =
+        CostAndQuality<kType, LanesOf<kWidth>>(
+            GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+    for (int l = 0; l < count; ++l) {
+      cost[i + l] = r.cost[l];
+      quality[i + l] = r.quality[l];
+    }
   }
 }
 

@@ -52,6 +52,11 @@ template <ElementType kType>
   MeanRatioListPass<kType, kTargetLanes>(list, quality);
 }
 
+template <ElementType kType>
+[[gnu::flatten]] void CostAndQualityOfList(const ElementList& list, double* cost, double* quality) {
+  CostAndQualityListPass<kType, kTargetLanes>(list, cost, quality);
+}
+
 extern const ElementPasses kTargetPasses;
 const ElementPasses kTargetPasses = {
     kTargetLanes,
@@ -63,6 +68,9 @@ const ElementPasses kTargetPasses = {
      &ScatterTransformOfRange<ElementType::kPrism>},
     {&MeanRatioOfList<ElementType::kTetrahedron>, &MeanRatioOfList<ElementType::kHexahedron>,
      &MeanRatioOfList<ElementType::kPyramid>, &MeanRatioOfList<ElementType::kPrism>},
+    {&CostAndQualityOfList<ElementType::kTetrahedron>,
+     &CostAndQualityOfList<ElementType::kHexahedron>, &CostAndQualityOfList<ElementType::kPyramid>,
+     &CostAndQualityOfList<ElementType::kPrism>},
 };
 
 }  // namespace HWY_NAMESPACE
@@ -90,6 +98,10 @@ const ElementPasses kReferencePasses = {
      &MeanRatioListPass<ElementType::kHexahedron, kLanes>,
      &MeanRatioListPass<ElementType::kPyramid, kLanes>,
      &MeanRatioListPass<ElementType::kPrism, kLanes>},
+    {&CostAndQualityListPass<ElementType::kTetrahedron, kLanes>,
+     &CostAndQualityListPass<ElementType::kHexahedron, kLanes>,
+     &CostAndQualityListPass<ElementType::kPyramid, kLanes>,
+     &CostAndQualityListPass<ElementType::kPrism, kLanes>},
 };
 
 // Widest first.

@@ -80,17 +80,24 @@ void PrefetchElementNodes(const Mesh& mesh, NodeId node) {
   for (ElementId e : mesh.node_elements(node)) __builtin_prefetch(mesh.element_nodes(e).data());
 }
 
-// Per element around the node being stepped, in its node_elements row's order: the node's local
-// index and the node tetrahedra's terms at the step's start, which the trials reuse for the node
-// tetrahedra the node is not in (CostAndQualityMovingNode).
-struct ElementAtStepStart {
-  int local = -1;
-  NodeTetTerms terms;
+// Per element around the node being stepped, in its node_elements row's order: its node ids, and
+// a trial's cost and quality of it.
+struct NodeStepScratch {
+  std::vector<const NodeId*> node_lists;
+  std::vector<double> cost;
+  std::vector<double> quality;
+
+  void Fit(std::size_t elements) {
+    if (node_lists.size() >= elements) return;
+    node_lists.resize(elements);
+    cost.resize(elements);
+    quality.resize(elements);
+  }
 };
 
 // One per thread, grown to the largest valence seen: a node step allocates nothing.
-std::vector<ElementAtStepStart>& StepStartScratch() {
-  thread_local std::vector<ElementAtStepStart> scratch;
+NodeStepScratch& StepScratch() {
+  thread_local NodeStepScratch scratch;
   return scratch;
 }
 
@@ -123,18 +130,17 @@ double Powered(double cost, double exponent) {
 // where ∇²c is, for p ≥ 1). Fills `start` (one entry per element) for the trials. False if an
 // element is already past the barrier.
 bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cost, Vec3& gradient,
-                     Eigen::Matrix3d& hessian, std::span<ElementAtStepStart> start) {
+                     Eigen::Matrix3d& hessian, NodeStepScratch& scratch) {
   cost = 0.0;
   gradient.setZero();
   hessian.setZero();
   const std::span<const ElementId> elements = mesh.node_elements(node);
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const std::span<const NodeId> ids = mesh.element_nodes(elements[i]);
+    scratch.node_lists[i] = ids.data();
     const bool finite = DispatchElementType(mesh.type(elements[i]), [&]<ElementType kType>() {
-      const int local = LocalIndex<kType>(ids.data(), node);
-      start[i].local = local;
       const InverseMeanRatioHessianResult r = InverseMeanRatioHessian<kType>(
-          GatherNodes<kType>(mesh, ids.data()), local, &start[i].terms);
+          GatherNodes<kType>(mesh, ids.data()), LocalIndex<kType>(ids.data(), node));
       if (!std::isfinite(r.cost)) return false;
       if (exponent == 1.0) {
         cost += r.cost;
@@ -158,24 +164,30 @@ bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cos
 // Evaluates the node's elements at the node's current position into the trial arrays; returns
 // false as soon as one is invalid (Def. 2), i.e. past the cost barrier. Only the node has moved
 // since NodeDerivatives filled `start`.
-bool EvaluateTrial(const Mesh& mesh, NodeId node, std::span<const ElementAtStepStart> start,
+bool EvaluateTrial(const SmoothingContext& context, NodeId node, NodeStepScratch& scratch,
                    PolishState& state, double& cost, double& q_min) {
+  const Mesh& mesh = context.mesh;
+  const std::span<const ElementId> elements = mesh.node_elements(node);
+  const auto count = static_cast<std::int64_t>(elements.size());
+  // Several elements side by side within each run of one type (the row is in canonical order,
+  // so grouped by type): each gets CostAndQuality's bits, summed below in the row's order.
+  for (std::int64_t begin = 0; begin < count;) {
+    const ElementType type = mesh.type(elements[begin]);
+    std::int64_t end = begin + 1;
+    while (end < count && mesh.type(elements[end]) == type) ++end;
+    context.passes.cost_and_quality_list[TypeIndex(type)](
+        {mesh.x(), mesh.y(), mesh.z(), scratch.node_lists.data() + begin, end - begin},
+        scratch.cost.data() + begin, scratch.quality.data() + begin);
+    begin = end;
+  }
   cost = 0.0;
   q_min = std::numeric_limits<double>::infinity();
-  const std::span<const ElementId> elements = mesh.node_elements(node);
-  for (std::size_t i = 0; i < elements.size(); ++i) {
-    const ElementId e = elements[i];
-    const NodeId* ids = mesh.element_nodes(e).data();
-    const bool ok = DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
-      const InverseMeanRatioCostAndQuality r = CostAndQualityMovingNode<kType>(
-          GatherNodes<kType>(mesh, ids), start[i].local, start[i].terms);
-      if (r.quality == kInvalidQuality) return false;
-      state.trial_quality[e] = r.quality;
-      cost += Powered(r.cost, state.exponent);
-      q_min = std::min(q_min, r.quality);
-      return true;
-    });
-    if (!ok) return false;
+  for (std::int64_t i = 0; i < count; ++i) {
+    const double quality = scratch.quality[i];
+    if (quality == kInvalidQuality) return false;
+    state.trial_quality[elements[i]] = quality;
+    cost += Powered(scratch.cost[i], state.exponent);
+    q_min = std::min(q_min, quality);
   }
   return true;
 }
@@ -206,13 +218,12 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   Mesh& mesh = context.mesh;
   const std::span<const ElementId> elements = mesh.node_elements(node);
   if (elements.empty()) return NodeStep::kConverged;
-  std::vector<ElementAtStepStart>& scratch = StepStartScratch();
-  if (scratch.size() < elements.size()) scratch.resize(elements.size());
-  const std::span<ElementAtStepStart> start_terms(scratch.data(), elements.size());
+  NodeStepScratch& scratch = StepScratch();
+  scratch.Fit(elements.size());
   double old_cost = 0.0;
   Vec3 g;
   Eigen::Matrix3d h;
-  if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h, start_terms)) {
+  if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h, scratch)) {
     return NodeStep::kRefused;
   }
   if (context.sliding[node]) {
@@ -265,7 +276,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
     // worst element: holding every node's worst element would freeze the nodes around each
     // locally worst element, and measured on mixed-hex-pyr-tet.vtk that keeps q_mean 0.003 below
     // the optimiser's.
-    if (EvaluateTrial(mesh, node, start_terms, state, cost, q_min) && cost < old_cost) {
+    if (EvaluateTrial(context, node, scratch, state, cost, q_min) && cost < old_cost) {
       if (q_min >= state.q_floor) {
         for (ElementId e : elements) {
           context.quality[e] = state.trial_quality[e];
