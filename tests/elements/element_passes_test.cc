@@ -187,6 +187,52 @@ TYPED_TEST(ElementPassesTest, CostAndQualityListPassGivesTheOneElementBitsAtEver
   EXPECT_GT(invalid, 10);
 }
 
+// A polish step takes the derivatives of its node's elements through the Hessian list pass, each
+// element with respect to its own local node: every lane must get the one-element bits
+// (InverseMeanRatioHessian), invalid elements included (cost +∞, zero derivatives), at every width.
+TYPED_TEST(ElementPassesTest, HessianListPassGivesTheOneElementBitsAtEveryWidth) {
+  constexpr ElementType kType = TypeParam::kType;
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  const TestBlock<kType> block = MakeBlock<kType>();
+  const auto n = static_cast<std::int64_t>(block.elements.size());
+  std::vector<const NodeId*> node_lists;
+  std::vector<std::int64_t> entries;
+  std::vector<int> local;
+  for (std::int64_t k = 0; k < n; ++k) {
+    entries.push_back((29 * k) % n);
+    node_lists.push_back(block.nodes.data() + entries.back() * kNodes);
+    local.push_back(static_cast<int>((k * 7 + k / kNodes) % kNodes));  // every node, mixed lanes
+  }
+  int invalid = 0;
+  for (int lanes : SupportedLaneWidths()) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
+    ASSERT_TRUE(passes.ok()) << passes.status();
+    for (const std::int64_t count :
+         {std::int64_t{1}, std::int64_t{2}, std::int64_t{5}, std::int64_t{11}, n}) {
+      std::vector<InverseMeanRatioHessianOf<double>> got(count);
+      (*passes)->hessian_list[TypeIndex(kType)](
+          {block.x, block.y, block.z, node_lists.data(), count}, local.data(), got.data());
+      for (std::int64_t i = 0; i < count; ++i) {
+        const InverseMeanRatioHessianResult expected =
+            InverseMeanRatioHessian<kType>(block.elements[entries[i]], local[i]);
+        const InverseMeanRatioHessianResult lane = ToHessianResult(got[i]);
+        SCOPED_TRACE(::testing::Message() << "list entry " << i << ", node " << local[i]);
+        EXPECT_EQ(Bits(lane.cost), Bits(expected.cost));
+        for (int r = 0; r < 3; ++r) {
+          EXPECT_EQ(Bits(lane.gradient[r]), Bits(expected.gradient[r])) << "gradient " << r;
+          for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(Bits(lane.hessian(r, c)), Bits(expected.hessian(r, c)))
+                << "hessian " << r << "," << c;
+          }
+        }
+        if (lanes == 2 && count == n && !std::isfinite(expected.cost)) ++invalid;
+      }
+    }
+  }
+  EXPECT_GT(invalid, 10);
+}
+
 // A block whose elements share nodes: kNodes distinct nodes each, drawn from a pool of 90 random
 // points, so most nodes collect contributions from many elements and the order they are added in
 // shows in the last bits.

@@ -92,6 +92,23 @@ inline bool Both(bool a, bool b) { return a && b; }
 template <typename Mask>
 requires(!std::is_same_v<Mask, bool>) GETME_LANE_INLINE Mask Both(Mask a, Mask b) { return a & b; }
 
+// Either condition, lane by lane.
+inline bool Either(bool a, bool b) { return a || b; }
+template <typename Mask>
+requires(!std::is_same_v<Mask, bool>) GETME_LANE_INLINE Mask Either(Mask a, Mask b) {
+  return a | b;
+}
+
+// True if the condition holds in no lane (for a skip that changes no lane's result).
+inline bool NoLane(bool condition) { return !condition; }
+template <typename Mask>
+requires(!std::is_same_v<Mask, bool>) GETME_LANE_INLINE bool NoLane(Mask condition) {
+  for (int l = 0; l < static_cast<int>(sizeof(Mask) / sizeof(condition[0])); ++l) {
+    if (condition[l] != 0) return false;
+  }
+  return true;
+}
+
 // A point or vector in 3D whose coordinates are lanes. The operations evaluate in the order
 // Eigen's fixed-size 3-vectors use (sums left to right), so Point3<double> results equal the
 // Eigen::Vector3d results of the same expressions bit for bit.

@@ -41,6 +41,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -98,14 +99,13 @@ template <ElementType kType>
   return true;
 }
 
-// kOrder 0: cost only; 1: and the gradient; 2: and the Hessian. For an invalid element (Def. 2:
-// some node tetrahedron has det ≤ 0, or a coordinate is NaN) the cost is +∞ — the barrier — and
-// the gradient and Hessian are left zero: they carry no information past the barrier, and a
-// caller must test std::isfinite(cost) before using them. A node index outside
+// kOrder 0: cost only; 1: and the gradient (the Hessian: InverseMeanRatioHessianOf below). For an
+// invalid element (Def. 2: some node tetrahedron has det ≤ 0, or a coordinate is NaN) the cost is
+// +∞ — the barrier — and the gradient is left zero: it carries no information past the barrier,
+// and a caller must test std::isfinite(cost) before using it. A node index outside
 // 0..NodeCount(type)−1 belongs to no node tetrahedron and gets zero derivatives.
 template <ElementType kType, int kOrder>
-inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3* gradient,
-                                    Eigen::Matrix3d* hessian) {
+inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3* gradient) {
   using Table = ElementTable<kType>;
   constexpr auto& w = Table::kTargetInverse;
   constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
@@ -114,12 +114,10 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
 
   double sum = 0.0;
   Vec3 g = Vec3::Zero();
-  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
   for (const auto& t : Table::kNodeTets) {
     NodeTetFrame frame;
     if (!MakeNodeTetFrame<kType>(p, t, frame)) {
       if constexpr (kOrder >= 1) gradient->setZero();
-      if constexpr (kOrder >= 2) hessian->setZero();
       return kInfinity;
     }
     const auto& [d0, d1, d2, d1xd2, s0, s1, s2, det_s, frobenius2] = frame;
@@ -147,17 +145,10 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
       const Vec3 v = kDetWInverse * ddet;
       const double n_over_det = frobenius2 / det_s;
       g += a * (grad_n - (2.0 / 3.0) * n_over_det * v);
-      if constexpr (kOrder >= 2) {
-        const Eigen::Matrix3d cross_terms = grad_n * v.transpose() + v * grad_n.transpose();
-        h += a * (2.0 * b.squaredNorm() * Eigen::Matrix3d::Identity() -
-                  (2.0 / (3.0 * det_s)) * cross_terms +
-                  (10.0 / 9.0) * (n_over_det / det_s) * (v * v.transpose()));
-      }
     }
   }
   constexpr double kInverseTets = 1.0 / kTets;
   if constexpr (kOrder >= 1) *gradient = g * kInverseTets;
-  if constexpr (kOrder >= 2) *hessian = h * kInverseTets;
   return sum * kInverseTets;
 }
 
@@ -167,7 +158,7 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
 // is not valid (Def. 2).
 template <ElementType kType>
 inline double InverseMeanRatioCost(const ElementNodes<kType>& p) {
-  return internal::InverseMeanRatioTerms<kType, 0>(p, -1, nullptr, nullptr);
+  return internal::InverseMeanRatioTerms<kType, 0>(p, -1, nullptr);
 }
 
 // c(E) and the mean ratio q(E) of Def. 3 from one pass over the node tetrahedra: a polish trial
@@ -232,19 +223,127 @@ template <ElementType kType>
 inline InverseMeanRatioGradientResult InverseMeanRatioGradient(const ElementNodes<kType>& p,
                                                                int node) {
   InverseMeanRatioGradientResult result;
-  result.cost = internal::InverseMeanRatioTerms<kType, 1>(p, node, &result.gradient, nullptr);
+  result.cost = internal::InverseMeanRatioTerms<kType, 1>(p, node, &result.gradient);
   return result;
 }
 
 // c(E), ∂c/∂p_node and ∂²c/∂p_node² (symmetric, positive semi-definite where c is finite). Past
 // the barrier (cost +∞) gradient and Hessian are zero.
+// c(E), ∂c/∂p_node and ∂²c/∂p_node² over lanes (lanes.h): kLaneCount<S> elements side by side,
+// each with its own node (`node`: an int, or a lane vector of int64), so a polish step can take
+// the derivatives of a node's elements several at a time (element_passes.h,
+// HessianListPass). Written out coefficient by coefficient rather than with Eigen so that every
+// lane has the bits the one-element instantiation (S = double) gives. The Hessian's upper
+// triangle, row by row: (0,0) (0,1) (0,2) (1,1) (1,2) (2,2).
+template <typename S>
+struct InverseMeanRatioHessianOf {
+  S cost;
+  Point3<S> gradient;
+  std::array<S, 6> hessian;
+};
+
+template <ElementType kType, typename S, typename Node>
+GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianLanes(
+    const LaneNodes<kType, S>& p, Node node) {
+  using Table = ElementTable<kType>;
+  constexpr auto& w = Table::kTargetInverse;
+  constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
+  constexpr double kInverseTets = 1.0 / static_cast<double>(Table::kNodeTets.size());
+  const S zero = Splat<S>(0.0);
+  S sum = zero;
+  Point3<S> g{zero, zero, zero};
+  std::array<S, 6> h;
+  h.fill(zero);
+  auto valid = AllLanes<S>();
+  for (const auto& t : Table::kNodeTets) {
+    // MakeNodeTetFrame's operations, in its order.
+    const Point3<S> d0 = p[t[1]] - p[t[0]];
+    const Point3<S> d1 = p[t[2]] - p[t[0]];
+    const Point3<S> d2 = p[t[3]] - p[t[0]];
+    const Point3<S> d1xd2 = Cross(d1, d2);
+    const S det_d = Dot(d0, d1xd2);
+    valid = Both(valid, det_d > 0.0);
+    const Point3<S> s0 = d0 * w[0][0];
+    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
+    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
+    const S det_s = det_d * kDetWInverse;
+    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
+    const S a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
+    sum += frobenius2 * a;
+    // Which position m of T_k the node has, lane by lane; b = row m of E W⁻¹ and ∂det D/∂p_{t_m}
+    // (see the top of this file). A lane whose node is not in T_k adds nothing.
+    const auto at0 = node == t[0];
+    const auto at1 = node == t[1];
+    const auto at2 = node == t[2];
+    const auto at3 = node == t[3];
+    const auto in_tet = Either(Either(at0, at1), Either(at2, at3));
+    if (NoLane(in_tet)) continue;
+    const Point3<S> d2xd0 = Cross(d2, d0);
+    const Point3<S> d0xd1 = Cross(d0, d1);
+    const Point3<S> minus_all = -1.0 * (d1xd2 + d2xd0 + d0xd1);
+    auto pick = [&](const Point3<S>& if0, const Point3<S>& if1, const Point3<S>& if2,
+                    const Point3<S>& if3) {
+      return Point3<S>{Select(at0, if0.x, Select(at1, if1.x, Select(at2, if2.x, if3.x))),
+                       Select(at0, if0.y, Select(at1, if1.y, Select(at2, if2.y, if3.y))),
+                       Select(at0, if0.z, Select(at1, if1.z, Select(at2, if2.z, if3.z)))};
+    };
+    auto row = [&](int m) {
+      if (m == 0) {
+        return Point3<S>{Splat<S>(-(w[0][0] + w[1][0] + w[2][0])),
+                         Splat<S>(-(w[0][1] + w[1][1] + w[2][1])),
+                         Splat<S>(-(w[0][2] + w[1][2] + w[2][2]))};
+      }
+      return Point3<S>{Splat<S>(w[m - 1][0]), Splat<S>(w[m - 1][1]), Splat<S>(w[m - 1][2])};
+    };
+    const Point3<S> b = pick(row(0), row(1), row(2), row(3));
+    const Point3<S> ddet = pick(minus_all, d1xd2, d2xd0, d0xd1);
+    const Point3<S> grad_n = 2.0 * (s0 * b.x + s1 * b.y + s2 * b.z);
+    const Point3<S> v = kDetWInverse * ddet;
+    const S n_over_det = frobenius2 / det_s;
+    const Point3<S> dg = a * (grad_n - ((2.0 / 3.0) * n_over_det) * v);
+    g = {Select(in_tet, g.x + dg.x, g.x), Select(in_tet, g.y + dg.y, g.y),
+         Select(in_tet, g.z + dg.z, g.z)};
+    // ∇²(1/q) = a (2|b|² I − (2/(3δ)) (∇N vᵗ + v ∇Nᵗ) + (10/9)(N/δ²) v vᵗ).
+    const S diagonal = 2.0 * SquaredNorm(b);
+    const S cross_factor = 2.0 / (3.0 * det_s);
+    const S outer_factor = (10.0 / 9.0) * (n_over_det / det_s);
+    const std::array<S, 3> gn = {grad_n.x, grad_n.y, grad_n.z};
+    const std::array<S, 3> vv = {v.x, v.y, v.z};
+    int entry = 0;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j, ++entry) {
+        S term = outer_factor * (vv[i] * vv[j]) - cross_factor * (gn[i] * vv[j] + vv[i] * gn[j]);
+        if (i == j) term = diagonal + term;
+        h[entry] = Select(in_tet, h[entry] + a * term, h[entry]);
+      }
+    }
+  }
+  const S infinity = Splat<S>(std::numeric_limits<double>::infinity());
+  InverseMeanRatioHessianOf<S> result;
+  result.cost = Select(valid, sum * kInverseTets, infinity);
+  result.gradient = {Select(valid, g.x * kInverseTets, zero),
+                     Select(valid, g.y * kInverseTets, zero),
+                     Select(valid, g.z * kInverseTets, zero)};
+  for (int k = 0; k < 6; ++k) result.hessian[k] = Select(valid, h[k] * kInverseTets, zero);
+  return result;
+}
+
+// The one-element result in Eigen's types.
+inline InverseMeanRatioHessianResult ToHessianResult(const InverseMeanRatioHessianOf<double>& r) {
+  InverseMeanRatioHessianResult result;
+  result.cost = r.cost;
+  result.gradient = Vec3(r.gradient.x, r.gradient.y, r.gradient.z);
+  const auto& h = r.hessian;
+  result.hessian << h[0], h[1], h[2], h[1], h[3], h[4], h[2], h[4], h[5];
+  return result;
+}
+
 template <ElementType kType>
 inline InverseMeanRatioHessianResult InverseMeanRatioHessian(const ElementNodes<kType>& p,
                                                              int node) {
-  InverseMeanRatioHessianResult result;
-  result.cost =
-      internal::InverseMeanRatioTerms<kType, 2>(p, node, &result.gradient, &result.hessian);
-  return result;
+  const InverseMeanRatioHessianOf<double> r =
+      InverseMeanRatioHessianLanes<kType, double>(ToLaneNodes<kType>(p), node);
+  return ToHessianResult(r);
 }
 
 }  // namespace getme

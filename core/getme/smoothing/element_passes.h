@@ -121,6 +121,31 @@ void CostAndQualityListPass(const ElementList& list, double* cost, double* quali
   }
 }
 
+// derivatives[i] = InverseMeanRatioHessianLanes of the list's element i with respect to its
+// local node node[i] (mean_ratio_derivatives.h): a polish step's elements, around its node.
+template <ElementType kType, int kWidth>
+void HessianListPass(const ElementList& list, const int* node,
+                     InverseMeanRatioHessianOf<double>* derivatives) {
+  for (std::int64_t i = 0; i < list.count; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
+    const NodeId* lane_nodes[kWidth];
+    LaneMaskOf<kWidth> lane_node{};
+    for (int l = 0; l < kWidth; ++l) {
+      lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
+      lane_node[l] = node[i + std::min(l, count - 1)];
+    }
+    const InverseMeanRatioHessianOf<LanesOf<kWidth>> r =
+        InverseMeanRatioHessianLanes<kType, LanesOf<kWidth>>(
+            GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes), lane_node);
+    for (int l = 0; l < count; ++l) {
+      InverseMeanRatioHessianOf<double>& out = derivatives[i + l];
+      out.cost = r.cost[l];
+      out.gradient = {r.gradient.x[l], r.gradient.y[l], r.gradient.z[l]};
+      for (int k = 0; k < 6; ++k) out.hessian[k] = r.hessian[k][l];
+    }
+  }
+}
+
 // Step 1 on the entries [range.begin, range.end) of one type block (or of a reordering of it,
 // parallel/element_tiles.h): transform each element with its σ_j, scale and relax it, and add
 // w_j·p'_{i,j} and w_j to the sums of its nodes (Step 2's numerators and denominators). The

@@ -57,6 +57,12 @@ template <ElementType kType>
   CostAndQualityListPass<kType, kTargetLanes>(list, cost, quality);
 }
 
+template <ElementType kType>
+[[gnu::flatten]] void HessianOfList(const ElementList& list, const int* node,
+                                    InverseMeanRatioHessianOf<double>* derivatives) {
+  HessianListPass<kType, kTargetLanes>(list, node, derivatives);
+}
+
 extern const ElementPasses kTargetPasses;
 const ElementPasses kTargetPasses = {
     kTargetLanes,
@@ -71,6 +77,8 @@ const ElementPasses kTargetPasses = {
     {&CostAndQualityOfList<ElementType::kTetrahedron>,
      &CostAndQualityOfList<ElementType::kHexahedron>, &CostAndQualityOfList<ElementType::kPyramid>,
      &CostAndQualityOfList<ElementType::kPrism>},
+    {&HessianOfList<ElementType::kTetrahedron>, &HessianOfList<ElementType::kHexahedron>,
+     &HessianOfList<ElementType::kPyramid>, &HessianOfList<ElementType::kPrism>},
 };
 
 }  // namespace HWY_NAMESPACE
@@ -102,6 +110,10 @@ const ElementPasses kReferencePasses = {
      &CostAndQualityListPass<ElementType::kHexahedron, kLanes>,
      &CostAndQualityListPass<ElementType::kPyramid, kLanes>,
      &CostAndQualityListPass<ElementType::kPrism, kLanes>},
+    {&HessianListPass<ElementType::kTetrahedron, kLanes>,
+     &HessianListPass<ElementType::kHexahedron, kLanes>,
+     &HessianListPass<ElementType::kPyramid, kLanes>,
+     &HessianListPass<ElementType::kPrism, kLanes>},
 };
 
 // Widest first.

@@ -24,6 +24,10 @@ struct ElementPasses {
   std::array<void (*)(const ElementList&, double* quality), kElementTypeCount> mean_ratio_list{};
   std::array<void (*)(const ElementList&, double* cost, double* quality), kElementTypeCount>
       cost_and_quality_list{};
+  std::array<void (*)(const ElementList&, const int* node,
+                      InverseMeanRatioHessianOf<double>* derivatives),
+             kElementTypeCount>
+      hessian_list{};
 };
 
 // The passes of `lanes` lanes (2, 4 or 8), or with lanes = 0 the widest this machine runs.

@@ -80,16 +80,20 @@ void PrefetchElementNodes(const Mesh& mesh, NodeId node) {
   for (ElementId e : mesh.node_elements(node)) __builtin_prefetch(mesh.element_nodes(e).data());
 }
 
-// Per element around the node being stepped, in its node_elements row's order: its node ids, and
-// a trial's cost and quality of it.
+// Per element around the node being stepped, in its node_elements row's order: its node ids, the
+// node's position in it, its derivatives at the step's start, and a trial's cost and quality.
 struct NodeStepScratch {
   std::vector<const NodeId*> node_lists;
+  std::vector<int> local;  // the node's position in the element
+  std::vector<InverseMeanRatioHessianOf<double>> derivatives;
   std::vector<double> cost;
   std::vector<double> quality;
 
   void Fit(std::size_t elements) {
     if (node_lists.size() >= elements) return;
     node_lists.resize(elements);
+    local.resize(elements);
+    derivatives.resize(elements);
     cost.resize(elements);
     quality.resize(elements);
   }
@@ -127,43 +131,56 @@ double Powered(double cost, double exponent) {
 // The summed cost Σ c(E)^p, gradient and Hessian of `node`'s elements with respect to the node,
 // in the fixed order of its node_elements row. With p ≠ 1 by the chain rule:
 // ∇c^p = p c^{p−1} ∇c, ∇²c^p = p c^{p−1} ∇²c + p (p − 1) c^{p−2} ∇c ∇cᵀ (positive semi-definite
-// where ∇²c is, for p ≥ 1). Fills `start` (one entry per element) for the trials. False if an
+// where ∇²c is, for p ≥ 1). Fills `scratch` (one entry per element) for the trials. False if an
 // element is already past the barrier.
-bool NodeDerivatives(const Mesh& mesh, NodeId node, double exponent, double& cost, Vec3& gradient,
-                     Eigen::Matrix3d& hessian, NodeStepScratch& scratch) {
+bool NodeDerivatives(const SmoothingContext& context, NodeId node, double exponent, double& cost,
+                     Vec3& gradient, Eigen::Matrix3d& hessian, NodeStepScratch& scratch) {
+  const Mesh& mesh = context.mesh;
+  const std::span<const ElementId> elements = mesh.node_elements(node);
+  const auto count = static_cast<std::int64_t>(elements.size());
+  for (std::int64_t i = 0; i < count; ++i) {
+    const std::span<const NodeId> ids = mesh.element_nodes(elements[i]);
+    scratch.node_lists[i] = ids.data();
+    scratch.local[i] = DispatchElementType(mesh.type(elements[i]), [&]<ElementType kType>() {
+      return LocalIndex<kType>(ids.data(), node);
+    });
+  }
+  // Several elements side by side within each run of one type (the row is in canonical order,
+  // so grouped by type), each with the one-element bits; summed below in the row's order.
+  for (std::int64_t begin = 0; begin < count;) {
+    const ElementType type = mesh.type(elements[begin]);
+    std::int64_t end = begin + 1;
+    while (end < count && mesh.type(elements[end]) == type) ++end;
+    context.passes.hessian_list[TypeIndex(type)](
+        {mesh.x(), mesh.y(), mesh.z(), scratch.node_lists.data() + begin, end - begin},
+        scratch.local.data() + begin, scratch.derivatives.data() + begin);
+    begin = end;
+  }
   cost = 0.0;
   gradient.setZero();
   hessian.setZero();
-  const std::span<const ElementId> elements = mesh.node_elements(node);
-  for (std::size_t i = 0; i < elements.size(); ++i) {
-    const std::span<const NodeId> ids = mesh.element_nodes(elements[i]);
-    scratch.node_lists[i] = ids.data();
-    const bool finite = DispatchElementType(mesh.type(elements[i]), [&]<ElementType kType>() {
-      const InverseMeanRatioHessianResult r = InverseMeanRatioHessian<kType>(
-          GatherNodes<kType>(mesh, ids.data()), LocalIndex<kType>(ids.data(), node));
-      if (!std::isfinite(r.cost)) return false;
-      if (exponent == 1.0) {
-        cost += r.cost;
-        gradient += r.gradient;
-        hessian += r.hessian;
-      } else {
-        const Powers powers = PowersOf(r.cost, exponent);
-        const double first = exponent * powers.p_less1;
-        const double second = exponent * (exponent - 1.0) * powers.p_less2;
-        cost += powers.p;
-        gradient += first * r.gradient;
-        hessian += first * r.hessian + second * (r.gradient * r.gradient.transpose());
-      }
-      return true;
-    });
-    if (!finite) return false;
+  for (std::int64_t i = 0; i < count; ++i) {
+    if (!std::isfinite(scratch.derivatives[i].cost)) return false;
+    const InverseMeanRatioHessianResult r = ToHessianResult(scratch.derivatives[i]);
+    if (exponent == 1.0) {
+      cost += r.cost;
+      gradient += r.gradient;
+      hessian += r.hessian;
+    } else {
+      const Powers powers = PowersOf(r.cost, exponent);
+      const double first = exponent * powers.p_less1;
+      const double second = exponent * (exponent - 1.0) * powers.p_less2;
+      cost += powers.p;
+      gradient += first * r.gradient;
+      hessian += first * r.hessian + second * (r.gradient * r.gradient.transpose());
+    }
   }
   return true;
 }
 
 // Evaluates the node's elements at the node's current position into the trial arrays; returns
 // false as soon as one is invalid (Def. 2), i.e. past the cost barrier. Only the node has moved
-// since NodeDerivatives filled `start`.
+// since NodeDerivatives filled `scratch`.
 bool EvaluateTrial(const SmoothingContext& context, NodeId node, NodeStepScratch& scratch,
                    PolishState& state, double& cost, double& q_min) {
   const Mesh& mesh = context.mesh;
@@ -223,7 +240,7 @@ NodeStep PolishNode(SmoothingContext& context, NodeId node, PolishState& state) 
   double old_cost = 0.0;
   Vec3 g;
   Eigen::Matrix3d h;
-  if (!NodeDerivatives(mesh, node, state.exponent, old_cost, g, h, scratch)) {
+  if (!NodeDerivatives(context, node, state.exponent, old_cost, g, h, scratch)) {
     return NodeStep::kRefused;
   }
   if (context.sliding[node]) {
