@@ -242,6 +242,32 @@ struct InverseMeanRatioHessianOf {
   std::array<S, 6> hessian;
 };
 
+namespace internal {
+
+// Row m of E W⁻¹ (see the top of this file) in every lane.
+template <ElementType kType, typename S>
+GETME_LANE_INLINE Point3<S> TargetRow(int m) {
+  constexpr auto& w = ElementTable<kType>::kTargetInverse;
+  if (m == 0) {
+    return {Splat<S>(-(w[0][0] + w[1][0] + w[2][0])), Splat<S>(-(w[0][1] + w[1][1] + w[2][1])),
+            Splat<S>(-(w[0][2] + w[1][2] + w[2][2]))};
+  }
+  return {Splat<S>(w[m - 1][0]), Splat<S>(w[m - 1][1]), Splat<S>(w[m - 1][2])};
+}
+
+// Lane by lane: if0 where at0, else if1 where at1, else if2 where at2, else if3. (Free functions
+// rather than lambdas: everything that passes lanes must be forced inline, lanes.h.)
+template <typename Mask, typename S>
+GETME_LANE_INLINE Point3<S> ByPosition(Mask at0, Mask at1, Mask at2, const Point3<S>& if0,
+                                       const Point3<S>& if1, const Point3<S>& if2,
+                                       const Point3<S>& if3) {
+  return {Select(at0, if0.x, Select(at1, if1.x, Select(at2, if2.x, if3.x))),
+          Select(at0, if0.y, Select(at1, if1.y, Select(at2, if2.y, if3.y))),
+          Select(at0, if0.z, Select(at1, if1.z, Select(at2, if2.z, if3.z)))};
+}
+
+}  // namespace internal
+
 template <ElementType kType, typename S, typename Node>
 GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianLanes(
     const LaneNodes<kType, S>& p, Node node) {
@@ -281,22 +307,10 @@ GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianLanes(
     const Point3<S> d2xd0 = Cross(d2, d0);
     const Point3<S> d0xd1 = Cross(d0, d1);
     const Point3<S> minus_all = -1.0 * (d1xd2 + d2xd0 + d0xd1);
-    auto pick = [&](const Point3<S>& if0, const Point3<S>& if1, const Point3<S>& if2,
-                    const Point3<S>& if3) {
-      return Point3<S>{Select(at0, if0.x, Select(at1, if1.x, Select(at2, if2.x, if3.x))),
-                       Select(at0, if0.y, Select(at1, if1.y, Select(at2, if2.y, if3.y))),
-                       Select(at0, if0.z, Select(at1, if1.z, Select(at2, if2.z, if3.z)))};
-    };
-    auto row = [&](int m) {
-      if (m == 0) {
-        return Point3<S>{Splat<S>(-(w[0][0] + w[1][0] + w[2][0])),
-                         Splat<S>(-(w[0][1] + w[1][1] + w[2][1])),
-                         Splat<S>(-(w[0][2] + w[1][2] + w[2][2]))};
-      }
-      return Point3<S>{Splat<S>(w[m - 1][0]), Splat<S>(w[m - 1][1]), Splat<S>(w[m - 1][2])};
-    };
-    const Point3<S> b = pick(row(0), row(1), row(2), row(3));
-    const Point3<S> ddet = pick(minus_all, d1xd2, d2xd0, d0xd1);
+    const Point3<S> b = internal::ByPosition(
+        at0, at1, at2, internal::TargetRow<kType, S>(0), internal::TargetRow<kType, S>(1),
+        internal::TargetRow<kType, S>(2), internal::TargetRow<kType, S>(3));
+    const Point3<S> ddet = internal::ByPosition(at0, at1, at2, minus_all, d1xd2, d2xd0, d0xd1);
     const Point3<S> grad_n = 2.0 * (s0 * b.x + s1 * b.y + s2 * b.z);
     const Point3<S> v = kDetWInverse * ddet;
     const S n_over_det = frobenius2 / det_s;
