@@ -1,17 +1,24 @@
 #!/usr/bin/python3
-"""The process-start comparison of docs/benchmarks.md ("Process start"): the whole default run of
-`getme smooth IN OUT --threads 2 --quiet` on the shared meshes with a Mesquite figure, as built and
-with the libraries `getme` used to link preloaded (LD_PRELOAD), alternately, so both columns come
-from one binary on one machine state.
+"""Alternating whole default runs, `getme smooth IN OUT --threads 2 --quiet`, on the shared meshes
+with a Mesquite figure, in two columns measured turn about, so both see one machine state:
+- by default (docs/benchmarks.md, "Process start") the build's getme as built, and the same binary
+  with the libraries getme used to link preloaded (LD_PRELOAD);
+- with --against OTHER_GETME, the build's getme and another getme binary (an older commit's
+  build: docs/benchmarks.md, "Element lists ...").
+Prints a markdown table and the geometric mean of Mesquite's time over each column's.
 
-Usage: bench/process_start.py BUILD_DIR [--shared DIR] [--repeats N] [--preload "LIB ..."]
+Usage: bench/process_start.py BUILD_DIR [--shared DIR] [--repeats N]
+                              [--preload "LIB ..." | --against OTHER_GETME]
 """
 import argparse
+import math
 import os
 import statistics
 import subprocess
 import tempfile
 import time
+
+from end_to_end import mesquite_reference
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MESHES = ["mesquite/tire.vtk", "mesquite/flat-tet-sphere.vtk", "mesquite/cub_fru.vtk",
@@ -21,7 +28,7 @@ MESHES = ["mesquite/tire.vtk", "mesquite/flat-tet-sphere.vtk", "mesquite/cub_fru
 OLD_LIBRARIES = "libexoIIv2c.so.5 libcgns.so.3.4 libhwy.so.1 libgrpc++.so.1.51 libprotobuf.so.32"
 
 
-def timed_run(getme, mesh, output, preload):
+def timed_run(getme, mesh, output, preload=""):
     env = dict(os.environ)
     if preload:
         env["LD_PRELOAD"] = preload
@@ -37,21 +44,36 @@ def main():
     parser.add_argument("--shared", default=os.path.join(HERE, "..", "..", "shared", "meshes"))
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--preload", default=OLD_LIBRARIES)
+    parser.add_argument("--against", default=None, help="another getme binary: the second column")
     args = parser.parse_args()
     getme = os.path.join(args.build, "bin", "getme")
+    reference = mesquite_reference(args.shared)
+    second = "other getme" if args.against else "libraries preloaded"
+    ratios = ([], [])
     with tempfile.TemporaryDirectory() as work:
         output = os.path.join(work, "out.vtk")
-        print("| mesh | now, s (min–max) | libraries preloaded, s (min–max) |")
-        print("|---|---|---|")
+        print(f"| mesh | now, s (min–max) | {second}, s (min–max) | now / {second} |")
+        print("|---|---|---|---|")
         for relative in MESHES:
             mesh = os.path.join(args.shared, relative)
             now, before = [], []
             for _ in range(args.repeats):
-                now.append(timed_run(getme, mesh, output, ""))
-                before.append(timed_run(getme, mesh, output, args.preload))
-            print(f"| {os.path.basename(relative)} | {statistics.median(now):.4f} "
-                  f"({min(now):.4f}–{max(now):.4f}) | {statistics.median(before):.4f} "
-                  f"({min(before):.4f}–{max(before):.4f}) |", flush=True)
+                now.append(timed_run(getme, mesh, output))
+                if args.against:
+                    before.append(timed_run(args.against, mesh, output))
+                else:
+                    before.append(timed_run(getme, mesh, output, args.preload))
+            median_now, median_before = statistics.median(now), statistics.median(before)
+            mesquite_seconds = reference[os.path.basename(relative)][2]
+            ratios[0].append(mesquite_seconds / median_now)
+            ratios[1].append(mesquite_seconds / median_before)
+            print(f"| {os.path.basename(relative)} | {median_now:.4f} "
+                  f"({min(now):.4f}–{max(now):.4f}) | {median_before:.4f} "
+                  f"({min(before):.4f}–{max(before):.4f}) | {median_now / median_before:.3f} |",
+                  flush=True)
+    means = [math.exp(sum(math.log(r) for r in column) / len(column)) for column in ratios]
+    print(f"\nGeometric mean of Mesquite's time over getme's: now {means[0]:.2f}, "
+          f"{second} {means[1]:.2f}.")
 
 
 if __name__ == "__main__":

@@ -74,6 +74,25 @@ TestBlock<kType> MakeBlock() {
 // (begin, end) ranges: whole, starting off a vector boundary, and shorter than any vector.
 constexpr std::int64_t kRanges[][2] = {{0, 413}, {3, 408}, {5, 6}, {400, 413}};
 
+// A list of the block's entries (stride · k) mod n, k < count: scattered through the block, with
+// repeats once count passes n; the list passes see each entry's node ids only.
+struct ScatteredList {
+  std::vector<std::int64_t> entries;
+  std::vector<const NodeId*> node_lists;
+};
+
+template <ElementType kType>
+ScatteredList ScatterList(const TestBlock<kType>& block, std::int64_t stride, std::int64_t count) {
+  const auto n = static_cast<std::int64_t>(block.elements.size());
+  ScatteredList list;
+  for (std::int64_t k = 0; k < count; ++k) {
+    list.entries.push_back((stride * k) % n);
+    list.node_lists.push_back(block.nodes.data() +
+                              list.entries.back() * ElementTable<kType>::kNodes);
+  }
+  return list;
+}
+
 template <typename Tag>
 class ElementPassesTest : public ::testing::Test {};
 TYPED_TEST_SUITE(ElementPassesTest, AllElementTypes, ElementTypeName);
@@ -114,16 +133,10 @@ TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
 // into the list's own slots and nothing past them.
 TYPED_TEST(ElementPassesTest, MeanRatioListPassGivesTheOneElementBitsAtEveryWidth) {
   constexpr ElementType kType = TypeParam::kType;
-  constexpr int kNodes = ElementTable<kType>::kNodes;
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
   // Entries 0, 37, 74, ... modulo n: scattered, and every 413th repeats.
-  std::vector<const NodeId*> node_lists;
-  std::vector<std::int64_t> entries;
-  for (std::int64_t k = 0; k < 2 * n; ++k) {
-    entries.push_back((37 * k) % n);
-    node_lists.push_back(block.nodes.data() + entries.back() * kNodes);
-  }
+  const auto [entries, node_lists] = ScatterList<kType>(block, 37, 2 * n);
   int invalid = 0;
   for (int lanes : SupportedLaneWidths()) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
@@ -151,15 +164,9 @@ TYPED_TEST(ElementPassesTest, MeanRatioListPassGivesTheOneElementBitsAtEveryWidt
 // included, at every width.
 TYPED_TEST(ElementPassesTest, CostAndQualityListPassGivesTheOneElementBitsAtEveryWidth) {
   constexpr ElementType kType = TypeParam::kType;
-  constexpr int kNodes = ElementTable<kType>::kNodes;
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
-  std::vector<const NodeId*> node_lists;
-  std::vector<std::int64_t> entries;
-  for (std::int64_t k = 0; k < n; ++k) {
-    entries.push_back((53 * k) % n);
-    node_lists.push_back(block.nodes.data() + entries.back() * kNodes);
-  }
+  const auto [entries, node_lists] = ScatterList<kType>(block, 53, n);
   int invalid = 0;
   for (int lanes : SupportedLaneWidths()) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");
@@ -195,14 +202,10 @@ TYPED_TEST(ElementPassesTest, HessianListPassGivesTheOneElementBitsAtEveryWidth)
   constexpr int kNodes = ElementTable<kType>::kNodes;
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
-  std::vector<const NodeId*> node_lists;
-  std::vector<std::int64_t> entries;
-  std::vector<int> local;
-  for (std::int64_t k = 0; k < n; ++k) {
-    entries.push_back((29 * k) % n);
-    node_lists.push_back(block.nodes.data() + entries.back() * kNodes);
-    local.push_back(static_cast<int>((k * 7 + k / kNodes) % kNodes));  // every node, mixed lanes
-  }
+  const auto [entries, node_lists] = ScatterList<kType>(block, 29, n);
+  std::vector<int> local;  // every node, mixed within each vector
+  for (std::int64_t k = 0; k < n; ++k)
+    local.push_back(static_cast<int>((k * 7 + k / kNodes) % kNodes));
   int invalid = 0;
   for (int lanes : SupportedLaneWidths()) {
     SCOPED_TRACE(::testing::Message() << lanes << " lanes");

@@ -35,6 +35,40 @@ inline bool IsValid(const ElementNodes<kType>& p) {
 // Returned by MeanRatioOrInvalid for an element that is not valid (Def. 2).
 inline constexpr double kInvalidQuality = -1.0;
 
+// Node tetrahedron T_k = (t_0, t_1, t_2, t_3) of an element (eq. 9), over lanes: its edges from
+// t_0, d1 × d2, det D, the columns of S = D W⁻¹, det S and |S|_F². Every kernel on node
+// tetrahedra (the mean ratio here; the polish's cost, gradient and Hessian,
+// mean_ratio_derivatives.h) forms them here, in this order, so they all share these bits.
+template <typename S>
+struct NodeTetFrameOf {
+  Point3<S> d0, d1, d2, d1xd2;
+  S det_d;
+  Point3<S> s0, s1, s2;
+  S det_s;
+  S frobenius2;
+};
+
+template <ElementType kType, typename S>
+GETME_LANE_INLINE NodeTetFrameOf<S> NodeTetFrameAt(const LaneNodes<kType, S>& p,
+                                                   const NodeTetIndices& t) {
+  constexpr auto& w = ElementTable<kType>::kTargetInverse;
+  // The columns of S below and det S = det D · w00 w11 w22 rely on W⁻¹ being upper triangular.
+  static_assert(w[1][0] == 0.0 && w[2][0] == 0.0 && w[2][1] == 0.0);
+  NodeTetFrameOf<S> f;
+  f.d0 = p[t[1]] - p[t[0]];
+  f.d1 = p[t[2]] - p[t[0]];
+  f.d2 = p[t[3]] - p[t[0]];
+  f.d1xd2 = Cross(f.d1, f.d2);
+  f.det_d = Dot(f.d0, f.d1xd2);
+  // S = D W⁻¹ with W⁻¹ upper triangular: column j of S is Σ_i D_i · W⁻¹(i, j).
+  f.s0 = f.d0 * w[0][0];
+  f.s1 = f.d0 * w[0][1] + f.d1 * w[1][1];
+  f.s2 = f.d0 * w[0][2] + f.d1 * w[1][2] + f.d2 * w[2][2];
+  f.det_s = f.det_d * (w[0][0] * w[1][1] * w[2][2]);
+  f.frobenius2 = SquaredNorm(f.s0) + SquaredNorm(f.s1) + SquaredNorm(f.s2);
+  return f;
+}
+
 // Mean ratio quality number (Def. 3, eq. 10) clamped to [0, 1], or kInvalidQuality when a node
 // tetrahedron has det ≤ 0: one pass gives both validity and quality. The clamp matters because
 // rounding can give a regular element 1 + 2e-16, which would make the simultaneous weight
@@ -43,22 +77,12 @@ inline constexpr double kInvalidQuality = -1.0;
 template <ElementType kType, typename S>
 GETME_LANE_INLINE S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
   using Table = ElementTable<kType>;
-  constexpr auto& w = Table::kTargetInverse;
   S sum = Splat<S>(0.0);
   auto valid = AllLanes<S>();
   for (const auto& t : Table::kNodeTets) {
-    const Point3<S> d0 = p[t[1]] - p[t[0]];
-    const Point3<S> d1 = p[t[2]] - p[t[0]];
-    const Point3<S> d2 = p[t[3]] - p[t[0]];
-    const S det_d = Dot(d0, Cross(d1, d2));
-    valid = Both(valid, det_d > 0.0);
-    // S = D W⁻¹ with W⁻¹ upper triangular: column j of S is Σ_i D_i · W⁻¹(i, j).
-    const Point3<S> s0 = d0 * w[0][0];
-    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const S det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
-    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
-    sum += 3.0 * CubeRoot(det_s * det_s) / frobenius2;
+    const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
+    valid = Both(valid, f.det_d > 0.0);
+    sum += 3.0 * CubeRoot(f.det_s * f.det_s) / f.frobenius2;
   }
   const S q = sum / static_cast<double>(Table::kNodeTets.size());
   // std::clamp(q, 0, 1), lane by lane.

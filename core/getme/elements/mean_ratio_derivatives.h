@@ -183,26 +183,16 @@ struct InverseMeanRatioCostAndQualityOf {
 template <ElementType kType, typename S>
 GETME_LANE_INLINE InverseMeanRatioCostAndQualityOf<S> CostAndQuality(const LaneNodes<kType, S>& p) {
   using Table = ElementTable<kType>;
-  constexpr auto& w = Table::kTargetInverse;
   constexpr double kTets = static_cast<double>(Table::kNodeTets.size());
   S cost = Splat<S>(0.0);
   S quality = Splat<S>(0.0);
   auto valid = AllLanes<S>();
   for (const auto& t : Table::kNodeTets) {
-    // MakeNodeTetFrame's operations, in its order.
-    const Point3<S> d0 = p[t[1]] - p[t[0]];
-    const Point3<S> d1 = p[t[2]] - p[t[0]];
-    const Point3<S> d2 = p[t[3]] - p[t[0]];
-    const S det_d = Dot(d0, Cross(d1, d2));
-    valid = Both(valid, det_d > 0.0);
-    const Point3<S> s0 = d0 * w[0][0];
-    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const S det_s = det_d * (w[0][0] * w[1][1] * w[2][2]);
-    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
-    const S root = CubeRoot(det_s * det_s);
-    cost += frobenius2 * (1.0 / (3.0 * root));
-    quality += 3.0 * root / frobenius2;
+    const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
+    valid = Both(valid, f.det_d > 0.0);
+    const S root = CubeRoot(f.det_s * f.det_s);
+    cost += f.frobenius2 * (1.0 / (3.0 * root));
+    quality += 3.0 * root / f.frobenius2;
   }
   quality /= kTets;
   const S clamped =
@@ -282,18 +272,9 @@ GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianLanes(
   h.fill(zero);
   auto valid = AllLanes<S>();
   for (const auto& t : Table::kNodeTets) {
-    // MakeNodeTetFrame's operations, in its order.
-    const Point3<S> d0 = p[t[1]] - p[t[0]];
-    const Point3<S> d1 = p[t[2]] - p[t[0]];
-    const Point3<S> d2 = p[t[3]] - p[t[0]];
-    const Point3<S> d1xd2 = Cross(d1, d2);
-    const S det_d = Dot(d0, d1xd2);
+    const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
+    const auto& [d0, d1, d2, d1xd2, det_d, s0, s1, s2, det_s, frobenius2] = f;
     valid = Both(valid, det_d > 0.0);
-    const Point3<S> s0 = d0 * w[0][0];
-    const Point3<S> s1 = d0 * w[0][1] + d1 * w[1][1];
-    const Point3<S> s2 = d0 * w[0][2] + d1 * w[1][2] + d2 * w[2][2];
-    const S det_s = det_d * kDetWInverse;
-    const S frobenius2 = SquaredNorm(s0) + SquaredNorm(s1) + SquaredNorm(s2);
     const S a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
     sum += frobenius2 * a;
     // Which position m of T_k the node has, lane by lane; b = row m of E W⁻¹ and ∂det D/∂p_{t_m}

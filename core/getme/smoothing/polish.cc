@@ -15,6 +15,7 @@
 #include "getme/mesh/local_index.h"
 #include "getme/mesh/node_colouring.h"
 #include "getme/mesh/node_positions.h"
+#include "getme/mesh/type_runs.h"
 #include "getme/parallel/block_loops.h"
 #include "getme/smoothing/whole_power.h"
 #include "getme/smoothing/worst_cluster.h"
@@ -145,17 +146,13 @@ bool NodeDerivatives(const SmoothingContext& context, NodeId node, double expone
       return LocalIndex<kType>(ids.data(), node);
     });
   }
-  // Several elements side by side within each run of one type (the row is in canonical order,
-  // so grouped by type), each with the one-element bits; summed below in the row's order.
-  for (std::int64_t begin = 0; begin < count;) {
-    const ElementType type = mesh.type(elements[begin]);
-    std::int64_t end = begin + 1;
-    while (end < count && mesh.type(elements[end]) == type) ++end;
+  // Several elements side by side, each with the one-element bits; summed below in the row's
+  // order.
+  ForEachTypeRun(mesh, elements, [&](ElementType type, std::int64_t begin, std::int64_t end) {
     context.passes.hessian_list[TypeIndex(type)](
         {mesh.x(), mesh.y(), mesh.z(), scratch.node_lists.data() + begin, end - begin},
         scratch.local.data() + begin, scratch.derivatives.data() + begin);
-    begin = end;
-  }
+  });
   cost = 0.0;
   gradient.setZero();
   hessian.setZero();
@@ -186,17 +183,13 @@ bool EvaluateTrial(const SmoothingContext& context, NodeId node, NodeStepScratch
   const Mesh& mesh = context.mesh;
   const std::span<const ElementId> elements = mesh.node_elements(node);
   const auto count = static_cast<std::int64_t>(elements.size());
-  // Several elements side by side within each run of one type (the row is in canonical order,
-  // so grouped by type): each gets CostAndQuality's bits, summed below in the row's order.
-  for (std::int64_t begin = 0; begin < count;) {
-    const ElementType type = mesh.type(elements[begin]);
-    std::int64_t end = begin + 1;
-    while (end < count && mesh.type(elements[end]) == type) ++end;
+  // Several elements side by side, each with CostAndQuality's bits; summed below in the row's
+  // order.
+  ForEachTypeRun(mesh, elements, [&](ElementType type, std::int64_t begin, std::int64_t end) {
     context.passes.cost_and_quality_list[TypeIndex(type)](
         {mesh.x(), mesh.y(), mesh.z(), scratch.node_lists.data() + begin, end - begin},
         scratch.cost.data() + begin, scratch.quality.data() + begin);
-    begin = end;
-  }
+  });
   cost = 0.0;
   q_min = std::numeric_limits<double>::infinity();
   for (std::int64_t i = 0; i < count; ++i) {

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "getme/elements/vec3.h"
+#include "getme/mesh/type_runs.h"
 #include "getme/parallel/block_loops.h"
 
 namespace getme {
@@ -78,15 +79,11 @@ void SmoothingContext::QualitiesOf(std::span<const ElementId> elements,
   const auto count = static_cast<std::int64_t>(elements.size());
   node_lists.resize(elements.size());
   for (std::int64_t i = 0; i < count; ++i) node_lists[i] = mesh.element_nodes(elements[i]).data();
-  for (std::int64_t begin = 0; begin < count;) {
-    const ElementType type = mesh.type(elements[begin]);
-    std::int64_t end = begin + 1;
-    while (end < count && mesh.type(elements[end]) == type) ++end;
+  ForEachTypeRun(mesh, elements, [&](ElementType type, std::int64_t begin, std::int64_t end) {
     passes.mean_ratio_list[TypeIndex(type)](
         {mesh.x(), mesh.y(), mesh.z(), node_lists.data() + begin, end - begin},
         quality_out.data() + begin);
-    begin = end;
-  }
+  });
 }
 
 void SmoothingContext::FinishPhase(PhaseSummary& summary, const Summary& state,
