@@ -47,20 +47,28 @@ template <ElementType kType>
   ScatterTransformPass<kType, kTargetLanes>(range, settings);
 }
 
+// The list passes (a sequential pick's elements, a polish step's) take at most 4 lanes. Their
+// lists are short and split by type (a tetrahedral node has about 24 elements, a hexahedral one
+// 8, a mixed one runs of 1–4), so 8 lanes leave many empty, and the Hessian kernel's live values
+// spill from 8-lane registers. Measured on this AVX-512 machine (docs/benchmarks.md, "Element
+// lists …"): the whole engine 10–28 % faster on the shared meshes with the lists at 4 lanes,
+// while the whole-mesh passes stay fastest at 8 (1M elements).
+constexpr int kListLanes = std::min(kTargetLanes, 4);
+
 template <ElementType kType>
 [[gnu::flatten]] void MeanRatioOfList(const ElementList& list, double* quality) {
-  MeanRatioListPass<kType, kTargetLanes>(list, quality);
+  MeanRatioListPass<kType, kListLanes>(list, quality);
 }
 
 template <ElementType kType>
 [[gnu::flatten]] void CostAndQualityOfList(const ElementList& list, double* cost, double* quality) {
-  CostAndQualityListPass<kType, kTargetLanes>(list, cost, quality);
+  CostAndQualityListPass<kType, kListLanes>(list, cost, quality);
 }
 
 template <ElementType kType>
 [[gnu::flatten]] void HessianOfList(const ElementList& list, const int* node,
                                     InverseMeanRatioHessianOf<double>* derivatives) {
-  HessianListPass<kType, kTargetLanes>(list, node, derivatives);
+  HessianListPass<kType, kListLanes>(list, node, derivatives);
 }
 
 extern const ElementPasses kTargetPasses;

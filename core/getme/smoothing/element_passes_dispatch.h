@@ -16,6 +16,7 @@
 namespace getme {
 
 struct ElementPasses {
+  // The whole-mesh passes' width; the list passes take at most 4 (element_passes_dispatch.cc).
   int lanes = 0;
   // Indexed by TypeIndex.
   std::array<void (*)(const BlockRange&, double* quality), kElementTypeCount> mean_ratio{};
