@@ -73,6 +73,7 @@ enum class NodeStep { kSkipped, kConverged, kRefused, kMoved };
 // of the whole run. Two steps ahead the row is fetched, one step ahead the node lists it names.
 void PrefetchElementRow(const Mesh& mesh, NodeId node) {
   const std::span<const ElementId> row = mesh.node_elements(node);
+  if (row.empty()) return;
   __builtin_prefetch(row.data());
   __builtin_prefetch(row.data() + row.size() - 1);
 }

@@ -46,7 +46,7 @@ struct PickWork {
   std::vector<NodeBackup> target;
   std::vector<ElementId> affected;  // the element, then its neighbours through movable nodes
   std::vector<double> affected_quality;
-  std::vector<const NodeId*> node_lists;  // scratch of SmoothingContext::QualitiesOf
+  std::vector<const NodeId*> node_lists;  // of `affected`, for SmoothingContext::QualitiesOf
   std::vector<double> quality_gain;  // per affected element: its new q − its old q (invalid as 0)
   std::vector<HeapUpdate> heap_updates;
   ElementNeighbourFinder neighbour_finder;
@@ -258,6 +258,7 @@ void SequentialSubstep::RunPick(PickWork& work) {
   // neighbours through a movable node change: the others keep their quality (and validity), so
   // they are not evaluated.
   work.affected_quality.resize(work.affected.size());
+  context_.NodeListsOf(work.affected, work.node_lists);
   bool valid = false;
   double fraction = 1.0;
   for (int attempt = 0; attempt <= params_.sequential_backtracking_steps && !valid;

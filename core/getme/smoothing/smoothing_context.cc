@@ -73,12 +73,17 @@ void SmoothingContext::RefreshQuality() {
       });
 }
 
-void SmoothingContext::QualitiesOf(std::span<const ElementId> elements,
-                                   std::vector<const NodeId*>& node_lists,
-                                   std::span<double> quality_out) const {
-  const auto count = static_cast<std::int64_t>(elements.size());
+void SmoothingContext::NodeListsOf(std::span<const ElementId> elements,
+                                   std::vector<const NodeId*>& node_lists) const {
   node_lists.resize(elements.size());
-  for (std::int64_t i = 0; i < count; ++i) node_lists[i] = mesh.element_nodes(elements[i]).data();
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    node_lists[i] = mesh.element_nodes(elements[i]).data();
+  }
+}
+
+void SmoothingContext::QualitiesOf(std::span<const ElementId> elements,
+                                   std::span<const NodeId* const> node_lists,
+                                   std::span<double> quality_out) const {
   ForEachTypeRun(mesh, elements, [&](ElementType type, std::int64_t begin, std::int64_t end) {
     passes.mean_ratio_list[TypeIndex(type)](
         {mesh.x(), mesh.y(), mesh.z(), node_lists.data() + begin, end - begin},

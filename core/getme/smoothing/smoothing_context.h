@@ -64,10 +64,13 @@ struct SmoothingContext {
   }
   // Recomputes `quality` for the whole mesh.
   void RefreshQuality();
-  // quality_out[i] = the mean ratio or kInvalidQuality of elements[i], computed passes.lanes
-  // elements at a time within each run of one type (the same bits as ElementQualityOrInvalid).
-  // `node_lists` is the caller's scratch, one entry per element.
-  void QualitiesOf(std::span<const ElementId> elements, std::vector<const NodeId*>& node_lists,
+  // node_lists[i] = elements[i]'s node ids, for QualitiesOf.
+  void NodeListsOf(std::span<const ElementId> elements,
+                   std::vector<const NodeId*>& node_lists) const;
+  // quality_out[i] = the mean ratio or kInvalidQuality of elements[i], whose node ids NodeListsOf
+  // gave, computed passes.lanes elements at a time within each run of one type (the same bits as
+  // ElementQualityOrInvalid).
+  void QualitiesOf(std::span<const ElementId> elements, std::span<const NodeId* const> node_lists,
                    std::span<double> quality_out) const;
   // q_min and q_mean of `quality` with invalid elements as 0, and the invalid count.
   using Summary = QualitySummary;
