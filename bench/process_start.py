@@ -7,7 +7,7 @@ with a Mesquite figure, in two columns measured turn about, so both see one mach
   build: docs/benchmarks.md, "Element lists ...").
 Prints a markdown table and the geometric mean of Mesquite's time over each column's.
 
-Usage: bench/process_start.py BUILD_DIR [--shared DIR] [--repeats N]
+Usage: bench/process_start.py BUILD_DIR [--shared DIR] [--repeats N] [--only NAME,...]
                               [--preload "LIB ..." | --against OTHER_GETME]
 """
 import argparse
@@ -45,7 +45,17 @@ def main():
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--preload", default=OLD_LIBRARIES)
     parser.add_argument("--against", default=None, help="another getme binary: the second column")
+    parser.add_argument("--only", default="",
+                        help="comma-separated file names of MESHES to run (default: all six)")
     args = parser.parse_args()
+    meshes = MESHES
+    if args.only:
+        wanted = args.only.split(",")
+        unknown = [name for name in wanted if name not in {os.path.basename(m) for m in MESHES}]
+        if unknown:
+            parser.error(f"--only: unknown mesh {', '.join(unknown)}; choose from "
+                         f"{', '.join(os.path.basename(m) for m in MESHES)}")
+        meshes = [m for m in MESHES if os.path.basename(m) in wanted]
     getme = os.path.join(args.build, "bin", "getme")
     reference = mesquite_reference(args.shared)
     second = "other getme" if args.against else "libraries preloaded"
@@ -54,7 +64,7 @@ def main():
         output = os.path.join(work, "out.vtk")
         print(f"| mesh | now, s (min–max) | {second}, s (min–max) | now / {second} |")
         print("|---|---|---|---|")
-        for relative in MESHES:
+        for relative in meshes:
             mesh = os.path.join(args.shared, relative)
             now, before = [], []
             for _ in range(args.repeats):
@@ -72,7 +82,8 @@ def main():
                   f"({min(before):.4f}–{max(before):.4f}) | {median_now / median_before:.3f} |",
                   flush=True)
     means = [math.exp(sum(math.log(r) for r in column) / len(column)) for column in ratios]
-    print(f"\nGeometric mean of Mesquite's time over getme's: now {means[0]:.2f}, "
+    over = "" if len(meshes) == len(MESHES) else f" (over {len(meshes)} of the {len(MESHES)} meshes)"
+    print(f"\nGeometric mean of Mesquite's time over getme's{over}: now {means[0]:.2f}, "
           f"{second} {means[1]:.2f}.")
 
 

@@ -22,6 +22,7 @@ mapfile -t meshes < <(find "$meshes_dir" -name '*.vtk' -o -name '*.su2' | sort)
 smooth_all() {
   local bin="$1" out="$2" server_pid port="" tries=0
   mkdir -p "$out"
+  : > "$out/server.log" # before the fork, so the first read never misses or sees an old log
   "$bin/getme-server" --listen 127.0.0.1:0 --http_listen= > "$out/server.log" 2>&1 &
   server_pid=$!
   while [ -z "$port" ] && [ "$tries" -lt 100 ]; do

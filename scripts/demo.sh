@@ -23,6 +23,9 @@ server_address=""
 
 # Starts getme-server on a free loopback port and waits until it says which one it bound.
 start_engine() {
+  # Emptied here, not by the job's own redirection: that runs only after the fork, and a read
+  # before it would find the last run's log and its port.
+  : > "$server_log"
   "$server_binary" --listen 127.0.0.1:0 > "$server_log" 2>&1 &
   server_pid=$!
   local port="" tries=0

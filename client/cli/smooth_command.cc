@@ -117,10 +117,13 @@ int RunSmoothCommand(const SmoothCommandOptions& options) {
                                              surface::MeasureKeptLayers(mesh, *slide, pool));
   }
 
-  if (absl::Status status = formats::UpdateGridFromMesh(mesh, converted->cell_elements, grid);
+  if (absl::Status status = formats::UpdateGridFromMesh(mesh, converted->cell_elements, grid,
+                                                        &report.result.after_elements);
       !status.ok()) {
     return fail(status, kExitFailure);
   }
+  // As many threads as smoothed it format the file's numbers; its bytes do not depend on them.
+  run->output->options.threads = report.result.threads;
   if (absl::Status status = WriteOutputMesh(run->document, *run->output); !status.ok()) {
     return fail(status, kExitFailure);
   }

@@ -9,9 +9,9 @@
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_join.h"
 #include "formats/vtk_cell_type.h"
-#include "getme/elements/element_quality.h"
 #include "getme/elements/node_orders.h"
 #include "getme/elements/vec3.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace getme::formats {
 namespace {
@@ -84,19 +84,6 @@ absl::Status ApplyFixedArray(const UnstructuredGrid& file, MeshBuilder& builder)
   return absl::OkStatus();
 }
 
-struct ElementMeasures {
-  double mean_ratio = 0.0;
-  double warpage = 0.0;
-  bool valid = false;
-};
-
-ElementMeasures MeasureElement(const Mesh& mesh, ElementId element) {
-  return DispatchElementType(mesh.type(element), [&]<ElementType kType>() {
-    const ElementNodes<kType> nodes = GatherNodes<kType>(mesh, mesh.element_nodes(element).data());
-    return ElementMeasures{MeanRatio<kType>(nodes), Warpage<kType>(nodes), IsValid<kType>(nodes)};
-  });
-}
-
 DataArray ScalarArray(std::string name, VtkDataType type) {
   DataArray array;
   array.name = std::move(name);
@@ -125,7 +112,7 @@ void SetArray(std::vector<VtkAttribute>& attributes, DataArray array) {
   attributes.push_back(std::move(attribute));
 }
 
-void SetQualityArrays(const Mesh& mesh, std::span<const ElementId> cell_elements,
+void SetQualityArrays(const ElementMeasures& measures, std::span<const ElementId> cell_elements,
                       std::vector<VtkAttribute>& cell_data) {
   DataArray mean_ratio = ScalarArray("mean_ratio", VtkDataType::kDouble);
   DataArray warpage = ScalarArray("warpage", VtkDataType::kDouble);
@@ -141,10 +128,9 @@ void SetQualityArrays(const Mesh& mesh, std::span<const ElementId> cell_elements
       valid.integers.push_back(0);
       continue;
     }
-    const ElementMeasures measures = MeasureElement(mesh, element);
-    mean_ratio.reals.push_back(measures.mean_ratio);
-    warpage.reals.push_back(measures.warpage);
-    valid.integers.push_back(measures.valid ? 1 : 0);
+    mean_ratio.reals.push_back(measures.quality[element]);
+    warpage.reals.push_back(measures.warpage[element]);
+    valid.integers.push_back(measures.valid[element]);
   }
   SetArray(cell_data, std::move(mean_ratio));
   SetArray(cell_data, std::move(warpage));
@@ -249,7 +235,7 @@ absl::StatusOr<GridMesh> GridToMesh(const UnstructuredGrid& file) {
 }
 
 absl::Status UpdateGridFromMesh(const Mesh& mesh, std::span<const ElementId> cell_elements,
-                                UnstructuredGrid& file) {
+                                UnstructuredGrid& file, const ElementMeasures* measures) {
   if (mesh.node_count() != file.point_count()) {
     return absl::InvalidArgumentError(absl::StrCat("the mesh has ", mesh.node_count(),
                                                    " nodes, but the file has ", file.point_count(),
@@ -267,8 +253,22 @@ absl::Status UpdateGridFromMesh(const Mesh& mesh, std::span<const ElementId> cel
                                                      mesh.element_count(), " elements"));
     }
   }
+  const auto elements = static_cast<std::size_t>(mesh.element_count());
+  if (measures != nullptr &&
+      (measures->quality.size() != elements || measures->warpage.size() != elements ||
+       measures->valid.size() != elements)) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("the element measures given have ", measures->quality.size(), " qualities, ",
+                     measures->warpage.size(), " warpages and ", measures->valid.size(),
+                     " validity flags, but the mesh has ", elements, " elements"));
+  }
   SetCoordinates(mesh, file.points);
-  SetQualityArrays(mesh, cell_elements, file.cell_data);
+  if (measures != nullptr) {
+    SetQualityArrays(*measures, cell_elements, file.cell_data);
+  } else {
+    ThreadPool pool(1);
+    SetQualityArrays(MeasureElements(mesh, pool), cell_elements, file.cell_data);
+  }
   return absl::OkStatus();
 }
 
@@ -288,7 +288,8 @@ UnstructuredGrid GridFromMesh(const Mesh& mesh, std::string title) {
     file.cells.Add(CellCode(type), nodes);
     cell_elements.push_back(element);
   }
-  SetQualityArrays(mesh, cell_elements, file.cell_data);
+  ThreadPool pool(1);
+  SetQualityArrays(MeasureElements(mesh, pool), cell_elements, file.cell_data);
   bool any_fixed = false;
   DataArray fixed = ScalarArray("fixed", VtkDataType::kInt);
   for (std::int64_t node = 0; node < mesh.node_count(); ++node) {

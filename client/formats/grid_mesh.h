@@ -9,6 +9,7 @@
 #include "absl/status/statusor.h"
 #include "formats/unstructured_grid.h"
 #include "getme/mesh/mesh.h"
+#include "getme/mesh/mesh_quality.h"
 
 namespace getme::formats {
 
@@ -36,9 +37,11 @@ absl::StatusOr<GridMesh> GridToMesh(const UnstructuredGrid& file);
 // (Sec. 4.4) and `valid` (Def. 2, 1/0) computed with the core kernels. Passthrough cells get
 // mean_ratio = -1, warpage = -1, valid = 0: they have no volume quality. Existing arrays of those
 // names are replaced where they are; new ones are appended as SCALARS. `cell_elements` is
-// GridMesh::cell_elements of the conversion the mesh came from.
+// GridMesh::cell_elements of the conversion the mesh came from. `measures`, if given, are
+// MeasureElements of `mesh` as it is now (SmoothingResult::after_elements), written instead of
+// measuring the mesh again; InvalidArgument if their sizes are not the mesh's.
 absl::Status UpdateGridFromMesh(const Mesh& mesh, std::span<const ElementId> cell_elements,
-                                UnstructuredGrid& file);
+                                UnstructuredGrid& file, const ElementMeasures* measures = nullptr);
 
 // A new grid holding `mesh` (elements as cells in element-id order, the same three quality
 // arrays, and a `fixed` point-data array when any node is fixed); for meshes that did not come

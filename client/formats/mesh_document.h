@@ -37,6 +37,9 @@ struct WriteOptions {
   GmshVersion gmsh_version = GmshVersion::k41;
   VtuLayout vtu_layout = VtuLayout::kAppended;
   bool vtu_compress = false;  // zlib-compressed blocks (vtkZLibDataCompressor)
+  // Threads that may format a legacy VTK file's ASCII numbers (formats/parallel_text.h). The
+  // file's bytes do not depend on it.
+  int threads = 1;
 };
 
 // A mesh file of any format, read into memory with everything needed to write it back.

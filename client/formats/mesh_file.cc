@@ -294,7 +294,7 @@ absl::StatusOr<std::string> SerializeMeshDocument(const MeshDocument& document, 
                                                   const WriteOptions& options) {
   switch (format) {
     case FileFormat::kVtkLegacy:
-      return SerializeVtk(document.grid, options.encoding);
+      return SerializeVtk(document.grid, options.encoding, options.threads);
     case FileFormat::kVtkXml:
       return SerializeVtu(document, options);
     case FileFormat::kGmsh:

@@ -9,6 +9,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "formats/file_io.h"
+#include "formats/parallel_text.h"
 #include "formats/vtk_array_checks.h"
 #include "formats/vtk_cell_type.h"
 #include "formats/vtk_values.h"
@@ -40,13 +41,14 @@ bool IsColorKind(VtkAttributeKind kind) {
 
 class Writer {
  public:
-  Writer(const UnstructuredGrid& file, Encoding encoding)
-      : file_(file), binary_(encoding == Encoding::kBinary) {}
+  Writer(const UnstructuredGrid& file, Encoding encoding, int threads)
+      : file_(file), binary_(encoding == Encoding::kBinary), threads_(threads) {}
 
   absl::StatusOr<std::string> Write() {
     if (file_.title.find_first_of("\r\n") != std::string::npos) {
       return absl::InvalidArgumentError("the title contains a line break");
     }
+    out_.reserve(SizeEstimate());
     absl::StrAppend(&out_, "# vtk DataFile Version ", file_.version_major, ".", file_.version_minor,
                     "\n", file_.title, "\n", binary_ ? "BINARY" : "ASCII",
                     "\nDATASET UNSTRUCTURED_GRID\n");
@@ -134,9 +136,12 @@ class Writer {
       if (binary_) {
         AppendIntegers(cells.connectivity, VtkDataType::kInt64, 1);
       } else {
-        for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
-          AppendRow(cells.nodes(cell), cells.node_count(cell));
-        }
+        AppendInParallel(out_, cells.size(), 1, threads_,
+                         [&](std::string& text, std::int64_t begin, std::int64_t end) {
+                           for (std::int64_t cell = begin; cell < end; ++cell) {
+                             AppendRow(text, cells.nodes(cell), cells.node_count(cell));
+                           }
+                         });
       }
     } else {
       // Classic rows are 32-bit in BINARY files.
@@ -148,17 +153,23 @@ class Writer {
       }
       absl::StrAppend(&out_, "CELLS ", cells.size(), " ",
                       cells.connectivity.size() + cells.types.size(), "\n");
-      for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
-        const std::int64_t count = cells.node_count(cell);
-        if (binary_) {
+      if (binary_) {
+        for (std::int64_t cell = 0; cell < cells.size(); ++cell) {
+          const std::int64_t count = cells.node_count(cell);
           AppendBigEndianInteger(out_, count, VtkDataType::kInt);
           for (std::int64_t k = 0; k < count; ++k) {
             AppendBigEndianInteger(out_, cells.nodes(cell)[k], VtkDataType::kInt);
           }
-        } else {
-          absl::StrAppend(&out_, count, count > 0 ? " " : "");
-          AppendRow(cells.nodes(cell), count);
         }
+      } else {
+        AppendInParallel(out_, cells.size(), 1, threads_,
+                         [&](std::string& text, std::int64_t begin, std::int64_t end) {
+                           for (std::int64_t cell = begin; cell < end; ++cell) {
+                             const std::int64_t count = cells.node_count(cell);
+                             absl::StrAppend(&text, count, count > 0 ? " " : "");
+                             AppendRow(text, cells.nodes(cell), count);
+                           }
+                         });
       }
       if (binary_) out_.push_back('\n');
     }
@@ -174,12 +185,37 @@ class Writer {
     return absl::OkStatus();
   }
 
-  void AppendRow(const std::int64_t* values, std::int64_t count) {
-    for (std::int64_t k = 0; k < count; ++k) {
-      if (k > 0) out_.push_back(' ');
-      absl::StrAppend(&out_, values[k]);
+  // About the file's length, reserved up front: the text then does not move while it grows (each
+  // doubling of a multi-megabyte string copied it and touched fresh pages). An estimate, not a
+  // bound: a longer file grows the string once more, and reserved pages it does not reach are
+  // never touched. Kept near the real length all the same, so a 10M-element file does not ask
+  // for gigabytes it will not use.
+  std::size_t SizeEstimate() const {
+    std::size_t reals = file_.points.reals.size();
+    std::size_t integers = file_.points.integers.size() + file_.cells.connectivity.size() +
+                           3 * file_.cells.types.size();
+    for (const auto* attributes : {&file_.field_data, &file_.point_data, &file_.cell_data}) {
+      for (const VtkAttribute& attribute : *attributes) {
+        for (const DataArray& array : attribute.arrays) {
+          reals += array.reals.size();
+          integers += array.integers.size();
+        }
+      }
     }
-    out_.push_back('\n');
+    // ASCII: a shortest round-trip double is up to 24 characters (most of a mesh's are 17–20),
+    // a node id or count a few; BINARY: 8 bytes at most each.
+    const std::size_t per_real = binary_ ? 8 : 20;
+    const std::size_t per_integer = binary_ ? 8 : 6;
+    constexpr std::size_t kHeaders = 1 << 16;  // titles, keywords, counts, array names
+    return reals * per_real + integers * per_integer + kHeaders;
+  }
+
+  static void AppendRow(std::string& text, const std::int64_t* values, std::int64_t count) {
+    for (std::int64_t k = 0; k < count; ++k) {
+      if (k > 0) text.push_back(' ');
+      absl::StrAppend(&text, values[k]);
+    }
+    text.push_back('\n');
   }
 
   // `tuples` < 0: dataset-level FIELD data, whose arrays may have any length.
@@ -291,12 +327,18 @@ class Writer {
       out_.push_back('\n');
       return;
     }
-    for (std::size_t i = 0; i < array.reals.size(); ++i) {
-      // A float array's values are exact floats here: printed as doubles, a double reader (ours)
-      // gets the same value back, not the decimal nearest to the float.
-      AppendReal(out_, array.reals[i]);
-      out_.push_back((i + 1) % array.components == 0 ? '\n' : ' ');
-    }
+    const std::vector<double>& reals = array.reals;
+    const std::int64_t components = array.components;
+    AppendInParallel(out_, static_cast<std::int64_t>(reals.size()), components, threads_,
+                     [&](std::string& text, std::int64_t begin, std::int64_t end) {
+                       for (std::int64_t i = begin; i < end; ++i) {
+                         // A float array's values are exact floats here: printed as doubles, a
+                         // double reader (ours) gets the same value back, not the decimal
+                         // nearest to the float.
+                         AppendReal(text, reals[i]);
+                         text.push_back((i + 1) % components == 0 ? '\n' : ' ');
+                       }
+                     });
   }
 
   void AppendIntegers(const std::vector<std::int64_t>& values, VtkDataType type, int components) {
@@ -305,10 +347,13 @@ class Writer {
       out_.push_back('\n');
       return;
     }
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      AppendInteger(out_, values[i], type);
-      out_.push_back((i + 1) % components == 0 ? '\n' : ' ');
-    }
+    AppendInParallel(out_, static_cast<std::int64_t>(values.size()), components, threads_,
+                     [&](std::string& text, std::int64_t begin, std::int64_t end) {
+                       for (std::int64_t i = begin; i < end; ++i) {
+                         AppendInteger(text, values[i], type);
+                         text.push_back((i + 1) % components == 0 ? '\n' : ' ');
+                       }
+                     });
   }
 
   void AppendBits(const std::vector<std::int64_t>& bits) {
@@ -337,13 +382,15 @@ class Writer {
 
   const UnstructuredGrid& file_;
   const bool binary_;
+  const int threads_;  // for the ASCII numbers (AppendInParallel): the bytes do not depend on it
   std::string out_;
 };
 
 }  // namespace
 
-absl::StatusOr<std::string> SerializeVtk(const UnstructuredGrid& file, Encoding encoding) {
-  return Writer(file, encoding).Write();
+absl::StatusOr<std::string> SerializeVtk(const UnstructuredGrid& file, Encoding encoding,
+                                         int threads) {
+  return Writer(file, encoding, threads).Write();
 }
 
 absl::Status WriteVtkFile(const std::string& path, const UnstructuredGrid& file,

@@ -22,7 +22,11 @@ namespace getme::formats {
 //
 // Fails with InvalidArgument if the model is inconsistent: wrong array lengths, node ids out of
 // range, integers outside their type, a title with a line break, an unnamed array.
-absl::StatusOr<std::string> SerializeVtk(const UnstructuredGrid& file, Encoding encoding);
+//
+// `threads` > 1 formats the numbers of large ASCII sections on that many threads
+// (parallel_text.h); the bytes are the same for every thread count.
+absl::StatusOr<std::string> SerializeVtk(const UnstructuredGrid& file, Encoding encoding,
+                                         int threads = 1);
 
 // Writes atomically: to a temporary file beside `path`, renamed over it once complete.
 absl::Status WriteVtkFile(const std::string& path, const UnstructuredGrid& file, Encoding encoding);

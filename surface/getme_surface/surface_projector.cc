@@ -1,19 +1,56 @@
 #include "getme_surface/surface_projector.h"
 
 #include <limits>
+#include <mutex>
 #include <vector>
 
 #include "absl/strings/str_cat.h"
 #include "getme_surface/aabb_trees.h"
+#include "getme_surface/triangle_grid.h"
 
 namespace getme::surface {
 using aabb::Point;
 using aabb::Segment;
 
+namespace {
+
+std::vector<std::array<Vec3, 3>> Corners(const std::vector<aabb::Triangle>& triangles) {
+  std::vector<std::array<Vec3, 3>> corners;
+  corners.reserve(triangles.size());
+  for (const aabb::Triangle& triangle : triangles) {
+    corners.push_back(
+        {aabb::ToVec3(triangle[0]), aabb::ToVec3(triangle[1]), aabb::ToVec3(triangle[2])});
+  }
+  return corners;
+}
+
+}  // namespace
+
 struct SurfaceProjector::Trees {
-  std::vector<aabb::TriangleSet> groups;
+  // A triangle tree built at its first query, by whichever thread asks first. The grids answer
+  // nearly every query of a smoothing run, so most runs never build one (building them was a
+  // third of the projector's set-up on the spherical shell).
+  struct LazyTriangles {
+    mutable aabb::TriangleSet set;
+    mutable std::once_flag built;
+    const aabb::TriangleSet& Get() const {
+      std::call_once(built, [this] { set.Build(); });
+      return set;
+    }
+  };
+
+  explicit Trees(int group_count)
+      : groups(std::make_unique<LazyTriangles[]>(static_cast<std::size_t>(group_count))) {}
+  // Per group: its triangles as a tree, and as a grid for the queries that come with a point of
+  // the group (triangle_grid.h). The grids answer those; the trees, the others.
+  std::unique_ptr<LazyTriangles[]> groups;
+  std::vector<TriangleGrid> group_grids;
   std::vector<aabb::SegmentSet> curves;
-  aabb::TriangleSet all;
+  // Every group's triangles, for distances to the whole surface (all_grid only with several
+  // groups: AllGrid()).
+  LazyTriangles all;
+  std::optional<TriangleGrid> all_grid;
+  const TriangleGrid& AllGrid() const { return all_grid ? *all_grid : group_grids.front(); }
 };
 
 absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
@@ -23,23 +60,25 @@ absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
                                                    " nodes, the mesh ", mesh.node_count(),
                                                    ": build both from the same mesh"));
   }
-  auto trees = std::make_unique<Trees>();
-  trees->groups.resize(static_cast<std::size_t>(surface.group_count));
+  auto trees = std::make_unique<Trees>(surface.group_count);
   trees->curves.resize(static_cast<std::size_t>(surface.curve_count));
   const auto point = [&](NodeId node) {
     return Point(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
   };
   for (const BoundaryFace& face : surface.faces) {
-    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->groups[face.group].items);
-    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->all.items);
+    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->groups[face.group].set.items);
+    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->all.set.items);
   }
   for (std::size_t e = 0; e < surface.feature_edges.size(); ++e) {
     const Segment segment(point(surface.feature_edges[e][0]), point(surface.feature_edges[e][1]));
     if (!segment.is_degenerate()) trees->curves[surface.edge_curve[e]].items.push_back(segment);
   }
-  for (auto& group : trees->groups) group.Build();
+  for (int group = 0; group < surface.group_count; ++group) {
+    trees->group_grids.emplace_back(Corners(trees->groups[group].set.items));
+  }
+  // With one group, its grid is the whole surface's.
+  if (surface.group_count != 1) trees->all_grid.emplace(Corners(trees->all.set.items));
   for (auto& curve : trees->curves) curve.Build();
-  trees->all.Build();
   return SurfaceProjector(std::move(trees));
 }
 
@@ -49,7 +88,12 @@ SurfaceProjector& SurfaceProjector::operator=(SurfaceProjector&&) noexcept = def
 SurfaceProjector::~SurfaceProjector() = default;
 
 Vec3 SurfaceProjector::OnGroup(int group, const Vec3& point, const Vec3* near) const {
-  return trees_->groups[group].Nearest(point, near);
+  if (near != nullptr) {
+    const std::optional<Vec3> nearest =
+        trees_->group_grids[group].NearestWithin(point, (point - *near).norm());
+    if (nearest) return *nearest;
+  }
+  return trees_->groups[group].Get().Nearest(point, near);
 }
 
 Vec3 SurfaceProjector::OnCurve(int curve, const Vec3& point, const Vec3* near) const {
@@ -71,11 +115,18 @@ Vec3 SurfaceProjector::Project(BoundaryNodeKind kind, int support, const Vec3& p
 }
 
 double SurfaceProjector::DistanceToSurface(const Vec3& point) const {
-  if (trees_->all.items.empty()) return std::numeric_limits<double>::infinity();
-  return (trees_->all.Nearest(point) - point).norm();
+  if (trees_->all.set.items.empty()) return std::numeric_limits<double>::infinity();
+  // The points asked about are sliding nodes, on the surface or within rounding of it: a grid
+  // search within a thousandth of a cell answers them exactly (no nearer point can lie outside
+  // the bound), and the tree answers the rest.
+  const TriangleGrid& grid = trees_->AllGrid();
+  if (const std::optional<Vec3> nearest = grid.NearestWithin(point, 1e-3 * grid.cell_size())) {
+    return (*nearest - point).norm();
+  }
+  return (trees_->all.Get().Nearest(point) - point).norm();
 }
 
-int SurfaceProjector::group_count() const { return static_cast<int>(trees_->groups.size()); }
+int SurfaceProjector::group_count() const { return static_cast<int>(trees_->group_grids.size()); }
 int SurfaceProjector::curve_count() const { return static_cast<int>(trees_->curves.size()); }
 
 }  // namespace getme::surface

@@ -5,11 +5,13 @@
 // node to the nearest point of its feature curve. The geometry is the input's, copied when the
 // projector is built, so the surface a node returns to never drifts with the smoothing.
 //
-// Queries run through CGAL's AABB trees (bounding-volume hierarchies of the triangles and of the
-// feature segments), one per group and one per curve: O(log n) per query on a well-shaped
-// surface. Quads are split along their diagonal 0–2 into two triangles: a bilinear patch would
-// differ from that by the quad's warp, which smoothing keeps small. docs/boundary.md says why
-// CGAL. Every structure is built by Build(); queries only read, so threads may share a projector.
+// A query that comes with a point of the surface (`near`: the node's position before its move)
+// goes to a grid of the group's triangles (triangle_grid.h), which needs to look only within the
+// move's length. Other queries, and moves too long for the grid, go to CGAL's AABB trees (one
+// per group, one per curve), built at their first query. Quads are split along their diagonal
+// 0–2 into two triangles: a bilinear patch would differ from that by the quad's warp, which
+// smoothing keeps small. docs/boundary.md says why CGAL, and why a grid as well. Queries only
+// read (the trees are built under std::call_once), so threads may share a projector.
 
 #include <memory>
 
@@ -31,9 +33,9 @@ class SurfaceProjector {
   ~SurfaceProjector();
 
   // The nearest point to `point` on the faces of `group` (0 ≤ group < group_count()). `near`, if
-  // given, must be a point of them (a sliding node's position before its move): the search
-  // starts from it instead of from a search for the nearest triangle corner, which halves a
-  // query's cost when the move is short.
+  // given, must be a point of them (a sliding node's position before its move): the nearest
+  // point is then within |point − near|, which lets the grid answer a short move with a few
+  // triangles.
   Vec3 OnGroup(int group, const Vec3& point, const Vec3* near = nullptr) const;
   // The nearest point to `point` on feature curve `curve` (0 ≤ curve < curve_count()); `near` as
   // above, a point of the curve.

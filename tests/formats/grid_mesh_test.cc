@@ -345,6 +345,31 @@ TEST(VtkUnsupportedCells, RepeatedNodeInAVolumeCellIsNamed) {
   EXPECT_EQ(mesh.status().message(), "cell 0 (tetra) lists point 1 twice");
 }
 
+// The CLI hands over the measures Smooth took of the result: they are what gets written, and a
+// set of another size is refused, not read past its end.
+TEST(VtkUpdateFromMesh, WritesTheMeasuresGivenAndRefusesOnesOfAnotherSize) {
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(OneCellFile(kVtkHexahedron, 12));
+  ASSERT_TRUE(file.ok()) << file.status();
+  absl::StatusOr<GridMesh> mesh = GridToMesh(*file);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  ElementMeasures given;
+  given.quality = {0.25};
+  given.warpage = {0.5};
+  given.valid = {0};
+  UnstructuredGrid updated = *file;
+  ASSERT_TRUE(UpdateGridFromMesh(mesh->mesh, mesh->cell_elements, updated, &given).ok());
+  EXPECT_EQ(FindArray(updated.cell_data, "mean_ratio")->AsDouble(0), 0.25);
+  EXPECT_EQ(FindArray(updated.cell_data, "warpage")->AsDouble(0), 0.5);
+  EXPECT_EQ(FindArray(updated.cell_data, "valid")->AsDouble(0), 0.0);
+
+  given.warpage.push_back(0.0);
+  const absl::Status status = UpdateGridFromMesh(mesh->mesh, mesh->cell_elements, updated, &given);
+  EXPECT_EQ(status.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(status.message(),
+            "the element measures given have 1 qualities, 2 warpages and 1 validity flags, but the "
+            "mesh has 1 elements");
+}
+
 TEST(VtkUpdateFromMesh, RefusesAMeshOfAnotherFile) {
   const absl::StatusOr<UnstructuredGrid> hex = ParseVtk(OneCellFile(kVtkHexahedron, 12));
   const absl::StatusOr<UnstructuredGrid> tet = ParseVtk(OneCellFile(kVtkTetra, 10));

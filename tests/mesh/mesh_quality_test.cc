@@ -172,6 +172,27 @@ TEST_F(DistortedMixedMeshQuality, PerElementQualitiesWarpagesAndValidityMatchRef
   }
 }
 
+TEST_F(DistortedMixedMeshQuality, OnePassMeasuresMatchReferenceAndSummariseAsEvaluate) {
+  const ElementMeasures measures = MeasureElements(mesh_, pool_);
+  ASSERT_EQ(measures.quality.size(), spec_.elements.size());
+  ASSERT_EQ(measures.warpage.size(), spec_.elements.size());
+  ASSERT_EQ(measures.valid.size(), spec_.elements.size());
+  for (std::size_t e = 0; e < spec_.elements.size(); ++e) {
+    EXPECT_NEAR(measures.quality[e], std::min(1.0, reference_.quality[e]), kTolerance)
+        << "element " << e;
+    EXPECT_NEAR(measures.warpage[e], reference_.warpage[e], kTolerance) << "element " << e;
+    EXPECT_EQ(measures.valid[e] != 0, reference_.valid[e]) << "element " << e;
+  }
+  const MeshQuality summarised = SummarizeMeasures(mesh_, measures, pool_);
+  const MeshQuality evaluated = EvaluateMeshQuality(mesh_, pool_);
+  EXPECT_EQ(summarised.q_min, evaluated.q_min);
+  EXPECT_EQ(summarised.q_mean, evaluated.q_mean);
+  EXPECT_EQ(summarised.invalid, 1);
+  EXPECT_EQ(summarised.first_invalid, std::vector<ElementId>{5});
+  EXPECT_EQ(summarised.warpage_max, evaluated.warpage_max);
+  EXPECT_EQ(summarised.histogram, evaluated.histogram);
+}
+
 TEST_F(DistortedMixedMeshQuality, MeshMinimumAndMeanCountInvalidAsZero) {
   const MeshQuality result = EvaluateMeshQuality(mesh_, pool_);
   double sum = 0.0;

@@ -1,11 +1,14 @@
 // ColourNodes (core/getme/mesh/node_colouring.h): the independent sets the polish stage moves in
 // parallel. No two nodes of one colour may share an element, every selected node is coloured once,
 // unselected nodes not at all, and the sets are ascending so the order of node steps is fixed.
+// ElementsByLastColour: each element under the largest colour among its nodes, checked element by
+// element against that maximum.
 
 #include "getme/mesh/node_colouring.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "getme/meshgen/distorted_hex_block.h"
@@ -70,6 +73,43 @@ TEST(NodeColouringTest, HexGridNeedsFewColours) {
       ColourNodes(*mesh, std::vector<std::uint8_t>(mesh->node_count(), 1));
   EXPECT_GE(colouring.colour_count(), 8);
   EXPECT_LE(colouring.colour_count(), 27);
+}
+
+TEST(ElementsByLastColourTest, EachElementUnderTheLastColourOfItsNodes) {
+  auto mesh = meshgen::HybridBlock(5, 4, 4, 0.3, 7);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  // Boundary nodes unselected, so boundary elements see fewer colours and corner elements may have
+  // none (they must then be in no row).
+  std::vector<std::uint8_t> selected(mesh->node_count(), 0);
+  for (NodeId node = 0; node < mesh->node_count(); ++node) {
+    selected[node] = mesh->is_boundary(node) ? 0 : 1;
+  }
+  const NodeColouring colouring = ColourNodes(*mesh, selected);
+  std::vector<int> colour(mesh->node_count(), -1);
+  for (int c = 0; c < colouring.colour_count(); ++c) {
+    for (NodeId node : colouring.Colour(c)) colour[node] = c;
+  }
+  const CompressedRows rows = ElementsByLastColour(*mesh, colouring);
+  ASSERT_EQ(rows.RowCount(), colouring.colour_count());
+  std::vector<int> row_of(mesh->element_count(), -1);
+  for (int c = 0; c < rows.RowCount(); ++c) {
+    const auto elements = rows.Row(c);
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      if (i > 0) {
+        EXPECT_LT(elements[i - 1], elements[i]) << "row " << c << " not ascending";
+      }
+      EXPECT_EQ(row_of[elements[i]], -1) << "element " << elements[i] << " in two rows";
+      row_of[elements[i]] = c;
+    }
+  }
+  int without_colour = 0;
+  for (ElementId e = 0; e < mesh->element_count(); ++e) {
+    int last = -1;
+    for (NodeId node : mesh->element_nodes(e)) last = std::max(last, colour[node]);
+    EXPECT_EQ(row_of[e], last) << "element " << e;
+    without_colour += last < 0;
+  }
+  EXPECT_GT(without_colour, 0) << "the mesh should have elements with only boundary nodes";
 }
 
 }  // namespace

@@ -85,5 +85,22 @@ TEST(PinnedArteryTest, TheWorstClusterStageLiftsThePinnedCapPlateau) {
   EXPECT_EQ(testing::CountInvalid(default_mesh), 0);
 }
 
+// Where the stand-in's rounds stall, the last round's steepest ascent of the minimum itself
+// (worst_cluster.h) lifts q_min further: without it the same run ends lower.
+TEST(PinnedArteryTest, TheAscentRoundLiftsTheMinimumWhereTheRoundsStall) {
+  SmoothingParams params;
+  params.threads = 2;
+  Mesh rounds_mesh = SmallArtery(false);
+  Mesh ascent_mesh = SmallArtery(false);
+  params.polish_cluster_ascent_iterations = 0;
+  auto rounds_only = Smooth(rounds_mesh, params);
+  params.polish_cluster_ascent_iterations = SmoothingParams{}.polish_cluster_ascent_iterations;
+  auto with_ascent = Smooth(ascent_mesh, params);
+  ASSERT_TRUE(rounds_only.ok()) << rounds_only.status();
+  ASSERT_TRUE(with_ascent.ok()) << with_ascent.status();
+  EXPECT_GT(with_ascent->after.q_min, rounds_only->after.q_min);
+  EXPECT_EQ(testing::CountInvalid(ascent_mesh), 0);
+}
+
 }  // namespace
 }  // namespace getme

@@ -193,6 +193,8 @@ TEST(PolishTest, ParametersAreValidated) {
       {"polish_cluster_tolerance", [](SmoothingParams& p) { p.polish_cluster_tolerance = -1e-3; }},
       {"polish_cluster_max_rounds", [](SmoothingParams& p) { p.polish_cluster_max_rounds = -1; }},
       {"polish_cluster_iterations", [](SmoothingParams& p) { p.polish_cluster_iterations = -1; }},
+      {"polish_cluster_ascent_iterations",
+       [](SmoothingParams& p) { p.polish_cluster_ascent_iterations = -1; }},
   };
   for (const BadValue& value : bad) {
     SmoothingParams changed;

@@ -120,9 +120,16 @@ TEST(ResultPropertyTest, EverySuccessIsValidKeepsFixedNodesAndReportsItsOwnQuali
     }
     double q_min = 1.0, q_sum = 0.0;
     std::int64_t invalid = 0;
+    // The per-element measures handed to the CLI's writer are the result's own, element by
+    // element.
+    ASSERT_EQ(result->after_elements.quality.size(),
+              static_cast<std::size_t>(mesh.element_count()));
+    ASSERT_EQ(result->after_elements.valid.size(), static_cast<std::size_t>(mesh.element_count()));
     for (ElementId e = 0; e < mesh.element_count(); ++e) {
       bool valid = false;
       const double q = ReferenceQuality(mesh, e, valid);
+      EXPECT_NEAR(result->after_elements.quality[e], q, 1e-12) << "element " << e;
+      EXPECT_EQ(result->after_elements.valid[e] != 0, valid) << "element " << e;
       invalid += valid ? 0 : 1;
       q_min = std::min(q_min, q);
       q_sum += q;

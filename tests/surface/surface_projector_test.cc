@@ -8,38 +8,17 @@
 
 #include <limits>
 #include <random>
+#include <thread>
 #include <vector>
 
+#include "brute_force_nearest.h"
 #include "surface_test_meshes.h"
 
 namespace getme::surface {
 namespace {
 
-struct Triangle3 {
-  Vec3 a, b, c;
-};
-
-// The closest point of a triangle to p: the projection on its plane if that falls inside,
-// otherwise the closest of the three edges' closest points (clamped segment projections).
-Vec3 ClosestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return a + t * ab;
-}
-
-Vec3 ClosestOnTriangle(const Vec3& p, const Triangle3& t) {
-  const Vec3 normal = (t.b - t.a).cross(t.c - t.a);
-  const Vec3 on_plane = p - normal * ((p - t.a).dot(normal) / normal.squaredNorm());
-  const auto inside = [&](const Vec3& u, const Vec3& v) {
-    return (v - u).cross(on_plane - u).dot(normal) >= 0.0;
-  };
-  if (inside(t.a, t.b) && inside(t.b, t.c) && inside(t.c, t.a)) return on_plane;
-  Vec3 best = ClosestOnSegment(p, t.a, t.b);
-  for (const Vec3& candidate : {ClosestOnSegment(p, t.b, t.c), ClosestOnSegment(p, t.c, t.a)}) {
-    if ((candidate - p).squaredNorm() < (best - p).squaredNorm()) best = candidate;
-  }
-  return best;
-}
+using test::BruteForceDistance;
+using test::Triangle3;
 
 std::vector<Triangle3> Triangles(const Mesh& mesh, const BoundarySurface& surface, int group) {
   const auto at = [&](NodeId n) { return Vec3(mesh.x()[n], mesh.y()[n], mesh.z()[n]); };
@@ -52,12 +31,6 @@ std::vector<Triangle3> Triangles(const Mesh& mesh, const BoundarySurface& surfac
       triangles.push_back({at(face.nodes[0]), at(face.nodes[2]), at(face.nodes[3])});
   }
   return triangles;
-}
-
-double BruteForceDistance(const Vec3& p, const std::vector<Triangle3>& triangles) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Triangle3& t : triangles) best = std::min(best, (ClosestOnTriangle(p, t) - p).norm());
-  return best;
 }
 
 void ExpectNearestAgreesWithBruteForce(const Mesh& mesh, double spread) {
@@ -93,6 +66,16 @@ void ExpectNearestAgreesWithBruteForce(const Mesh& mesh, double spread) {
     const Vec3 from_start = projector->OnGroup(0, p, &start);
     EXPECT_NEAR((from_start - p).norm(), expected, 1e-12 * (1.0 + expected)) << "trial " << trial;
     EXPECT_LE(BruteForceDistance(from_start, triangles), 1e-12) << "trial " << trial;
+    // A short move from a point of the surface, as the smoothers make (the projector's grid
+    // answers these; the tree the long ones above): the nearest point again, on the surface,
+    // whose distance to the surface is zero.
+    const Vec3 short_move = start + 0.02 * (p - start).normalized();
+    const Vec3 after_short = projector->OnGroup(0, short_move, &start);
+    const double short_expected = BruteForceDistance(short_move, triangles);
+    EXPECT_NEAR((after_short - short_move).norm(), short_expected, 1e-12 * (1.0 + short_expected))
+        << "trial " << trial;
+    EXPECT_LE(BruteForceDistance(after_short, triangles), 1e-12) << "trial " << trial;
+    EXPECT_LE(projector->DistanceToSurface(after_short), 1e-12) << "trial " << trial;
   }
 }
 
@@ -133,6 +116,45 @@ TEST(SurfaceProjectorTest, FeatureNodesGoToTheirCurveCornersAndInteriorNodesStay
   const Vec3 anywhere(0.1, 0.2, 0.3);
   EXPECT_EQ(projector->Project(BoundaryNodeKind::kCorner, -1, anywhere), anywhere);
   EXPECT_EQ(projector->Project(BoundaryNodeKind::kInterior, -1, anywhere), anywhere);
+}
+
+// The trees are built at their first query, by whichever thread asks first (std::call_once):
+// threads that all ask at once get the answers one thread gets alone. ThreadSanitizer checks the
+// build's publication in the sanitizer runs.
+TEST(SurfaceProjectorTest, ThreadsAskingAtOnceGetTheAnswersOfOneThread) {
+  const Mesh mesh = test::FacetedSphere();
+  absl::StatusOr<BoundarySurface> surface = ExtractBoundarySurface(mesh);
+  ASSERT_TRUE(surface.ok()) << surface.status();
+  std::vector<Vec3> points;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+  for (int i = 0; i < 200; ++i) {
+    points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+  }
+  absl::StatusOr<SurfaceProjector> alone = SurfaceProjector::Build(mesh, *surface);
+  ASSERT_TRUE(alone.ok()) << alone.status();
+  std::vector<Vec3> expected;
+  for (const Vec3& p : points) expected.push_back(alone->OnGroup(0, p));
+
+  absl::StatusOr<SurfaceProjector> shared = SurfaceProjector::Build(mesh, *surface);
+  ASSERT_TRUE(shared.ok()) << shared.status();
+  constexpr int kThreads = 4;
+  std::vector<std::vector<Vec3>> answers(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (const Vec3& p : points) answers[t].push_back(shared->OnGroup(0, p));
+      for (const Vec3& p : points)
+        answers[t].push_back(Vec3::Constant(shared->DistanceToSurface(p)));
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (int t = 0; t < kThreads; ++t) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      EXPECT_EQ(answers[t][i], expected[i]) << "thread " << t << ", point " << i;
+      EXPECT_EQ(answers[t][points.size() + i][0], alone->DistanceToSurface(points[i]));
+    }
+  }
 }
 
 TEST(SurfaceProjectorTest, ASurfaceOfAnotherMeshIsRefused) {

@@ -132,6 +132,7 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   params.polish_cluster_tolerance = 1e-3;
   params.polish_cluster_max_rounds = 7;
   params.polish_cluster_iterations = 50;
+  params.polish_cluster_ascent_iterations = 0;
   const v1::SmoothingParameters wire = ToWireParameters(params);
   EXPECT_FALSE(wire.has_polish());  // on is the default: not sent
   EXPECT_EQ(wire.polish_max_sweeps(), 17);
@@ -155,6 +156,7 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   EXPECT_EQ(back->polish_cluster_tolerance, 1e-3);
   EXPECT_EQ(back->polish_cluster_max_rounds, 7);
   EXPECT_EQ(back->polish_cluster_iterations, 50);
+  EXPECT_EQ(back->polish_cluster_ascent_iterations, 0);
   // Turning the stage off is a value (0), not an absent field: it must cross the wire.
   SmoothingParams no_cluster;
   no_cluster.polish_cluster_trigger = 0.0;

@@ -187,6 +187,9 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
   if (wire.has_polish_cluster_iterations()) {
     params.polish_cluster_iterations = wire.polish_cluster_iterations();
   }
+  if (wire.has_polish_cluster_ascent_iterations()) {
+    params.polish_cluster_ascent_iterations = wire.polish_cluster_ascent_iterations();
+  }
   if (wire.has_polish()) params.polish = wire.polish();
   if (wire.has_polish_tolerance()) params.polish_tolerance = wire.polish_tolerance();
   if (wire.has_polish_max_sweeps()) params.polish_max_sweeps = wire.polish_max_sweeps();
@@ -276,6 +279,7 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.polish_cluster_tolerance, defaults.polish_cluster_tolerance, [&](double v) { wire.set_polish_cluster_tolerance(v); });
   SetIfChanged(params.polish_cluster_max_rounds, defaults.polish_cluster_max_rounds, [&](std::int64_t v) { wire.set_polish_cluster_max_rounds(v); });
   SetIfChanged(params.polish_cluster_iterations, defaults.polish_cluster_iterations, [&](std::int64_t v) { wire.set_polish_cluster_iterations(v); });
+  SetIfChanged(params.polish_cluster_ascent_iterations, defaults.polish_cluster_ascent_iterations, [&](std::int64_t v) { wire.set_polish_cluster_ascent_iterations(v); });
   SetIfChanged(params.polish_tolerance, defaults.polish_tolerance, [&](double v) { wire.set_polish_tolerance(v); });
   SetIfChanged(params.polish_max_sweeps, defaults.polish_max_sweeps, [&](std::int64_t v) { wire.set_polish_max_sweeps(v); });
   SetIfChanged(params.polish_node_tolerance, defaults.polish_node_tolerance, [&](double v) { wire.set_polish_node_tolerance(v); });

@@ -22,8 +22,9 @@ namespace getme::formats {
   X(ex_put_coord_names) X(ex_put_id_map) X(ex_put_init_ext) X(ex_put_names) X(ex_put_set)          \
   X(ex_put_set_dist_fact) X(ex_put_set_param) X(ex_put_time) X(ex_put_var)                         \
   X(ex_put_variable_names) X(ex_put_variable_param) X(ex_set_int64_status)                         \
-  X(ex_set_max_name_length) X(nc_close) X(nc_inq_att) X(nc_inq_attname) X(nc_inq_nvars)            \
-  X(nc_inq_varname) X(nc_inq_varnatts) X(nc_open) X(nc_strerror)
+  X(ex_set_max_name_length) X(nc_close) X(nc_inq_att) X(nc_inq_attname) X(nc_inq_dimname)         \
+  X(nc_inq_nvars) X(nc_inq_vardimid) X(nc_inq_varname) X(nc_inq_varnatts) X(nc_inq_varndims)       \
+  X(nc_open) X(nc_strerror)
 // clang-format on
 
 struct ExodusFunctions {

@@ -6,10 +6,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <string>
 #include <system_error>
 #include <vector>
 
+#include "absl/strings/ascii.h"
 #include "absl/strings/str_cat.h"
+#include "absl/strings/str_join.h"
+#include "absl/strings/str_replace.h"
 #include "formats/exodus/exodus_functions.h"
 #include "formats/exodus/exodus_netcdf_header.h"
 
@@ -65,8 +69,102 @@ absl::Status CheckAttributes(int ncid, int variable, absl::string_view owner) {
   return absl::OkStatus();
 }
 
-// InvalidArgument for a netCDF file whose attributes the Exodus library cannot read safely; OK
-// when it is fine or not netCDF at all (ex_open then says why it cannot open it).
+// The Exodus library takes the size of a block or set from dimensions it looks up by name
+// (num_el_in_blk3, num_nod_per_el3), and getme sizes its buffers from the same numbers; but it
+// reads the variable itself (connect3) over the dimensions that variable declares. A file whose
+// connect3 declared other, longer dimensions made ex_get_conn write past getme's buffer: a heap
+// overflow inside netCDF (ncx_getn_int_longlong), found by the exodus fuzz target on 2026-11-27
+// and located with valgrind, since ASan does not see writes by uninstrumented libraries. So every
+// variable the reader has the library read must have exactly the dimensions Exodus II defines for
+// it (exodusII_int.h); "#" stands for the block or set number ending the variable's name, "*"
+// for any dimension (the name length of a names variable: the library reads at most the API's
+// name length of it).
+struct VariableShape {
+  const char* name;  // without the trailing number, if `numbered`
+  bool numbered;
+  std::vector<const char*> dimensions;
+};
+
+const std::vector<VariableShape>& ExodusVariableShapes() {
+  static const std::vector<VariableShape> shapes = {
+      {"coord", false, {"num_dim", "num_nodes"}},
+      {"coordx", false, {"num_nodes"}},
+      {"coordy", false, {"num_nodes"}},
+      {"coordz", false, {"num_nodes"}},
+      {"coor_names", false, {"num_dim", "*"}},
+      {"node_num_map", false, {"num_nodes"}},
+      {"elem_num_map", false, {"num_elem"}},
+      {"eb_status", false, {"num_el_blk"}},
+      {"eb_prop", true, {"num_el_blk"}},
+      {"eb_names", false, {"num_el_blk", "*"}},
+      {"connect", true, {"num_el_in_blk#", "num_nod_per_el#"}},
+      {"attrib", true, {"num_el_in_blk#", "num_att_in_blk#"}},
+      {"attrib_name", true, {"num_att_in_blk#", "*"}},
+      {"ss_status", false, {"num_side_sets"}},
+      {"ss_prop", true, {"num_side_sets"}},
+      {"ss_names", false, {"num_side_sets", "*"}},
+      {"elem_ss", true, {"num_side_ss#"}},
+      {"side_ss", true, {"num_side_ss#"}},
+      {"dist_fact_ss", true, {"num_df_ss#"}},
+      {"ns_status", false, {"num_node_sets"}},
+      {"ns_prop", true, {"num_node_sets"}},
+      {"ns_names", false, {"num_node_sets", "*"}},
+      {"node_ns", true, {"num_nod_ns#"}},
+      {"dist_fact_ns", true, {"num_nod_ns#"}},
+  };
+  return shapes;
+}
+
+// The shape Exodus II defines for a variable named `name`, and the number ending it; nullptr for
+// variables the reader never has the library read.
+const VariableShape* ShapeOf(absl::string_view name, absl::string_view* number) {
+  std::size_t digits = name.size();
+  while (digits > 0 && absl::ascii_isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+  const bool numbered = digits < name.size();
+  for (const VariableShape& shape : ExodusVariableShapes()) {
+    if (shape.numbered == numbered && name.substr(0, digits) == shape.name) {
+      *number = name.substr(digits);
+      return &shape;
+    }
+  }
+  return nullptr;
+}
+
+absl::Status CheckShape(int ncid, int variable, absl::string_view name) {
+  absl::string_view number;
+  const VariableShape* shape = ShapeOf(name, &number);
+  if (shape == nullptr) return absl::OkStatus();
+  std::vector<std::string> expected;
+  for (const char* dimension : shape->dimensions) {
+    expected.push_back(absl::StrReplaceAll(dimension, {{"#", number}}));
+  }
+  int rank = 0;
+  std::vector<std::string> found;
+  if (Exodus().nc_inq_varndims(ncid, variable, &rank) == NC_NOERR && rank >= 0 &&
+      rank <= NC_MAX_VAR_DIMS) {
+    std::vector<int> ids(static_cast<std::size_t>(rank));
+    if (Exodus().nc_inq_vardimid(ncid, variable, ids.data()) == NC_NOERR) {
+      for (const int id : ids) {
+        char dimension[NC_MAX_NAME + 1] = {};
+        if (Exodus().nc_inq_dimname(ncid, id, dimension) != NC_NOERR) break;
+        found.emplace_back(dimension);
+      }
+    }
+  }
+  bool same = found.size() == expected.size();
+  for (std::size_t k = 0; same && k < found.size(); ++k) {
+    same = expected[k] == "*" || found[k] == expected[k];
+  }
+  if (!same) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("variable '", name, "' has dimensions (", absl::StrJoin(found, ", "),
+                     "); Exodus II defines it over (", absl::StrJoin(expected, ", "), ")"));
+  }
+  return absl::OkStatus();
+}
+
+// InvalidArgument for a netCDF file whose attributes or variables the Exodus library cannot read
+// safely; OK when it is fine or not netCDF at all (ex_open then says why it cannot open it).
 absl::Status CheckNetcdfHeader(const std::string& path) {
   int ncid = -1;
   if (Exodus().nc_open(path.c_str(), NC_NOWRITE, &ncid) != NC_NOERR) return absl::OkStatus();
@@ -77,6 +175,7 @@ absl::Status CheckNetcdfHeader(const std::string& path) {
       char name[NC_MAX_NAME + 1] = {};
       if (Exodus().nc_inq_varname(ncid, variable, name) != NC_NOERR) continue;
       status = CheckAttributes(ncid, variable, absl::StrCat("variable '", name, "'"));
+      if (status.ok()) status = CheckShape(ncid, variable, name);
     }
   }
   Exodus().nc_close(ncid);

@@ -21,19 +21,6 @@ constexpr std::int64_t kMaxIndex = std::numeric_limits<std::int32_t>::max();
 constexpr double kMaxCoordinate = 1e40;
 constexpr double kMinElementExtent = 1e-40;
 
-// Builds CSR rows from (row, item) pairs given row counts; items stay in insertion order.
-template <typename ForEachPair>
-CompressedRows BuildRows(std::int64_t rows, ForEachPair&& for_each_pair) {
-  CompressedRows csr;
-  csr.offsets.assign(rows + 1, 0);
-  for_each_pair([&](std::int64_t row, std::int32_t) { ++csr.offsets[row + 1]; });
-  std::partial_sum(csr.offsets.begin(), csr.offsets.end(), csr.offsets.begin());
-  csr.items.resize(csr.offsets.back());
-  std::vector<std::int64_t> cursor(csr.offsets.begin(), csr.offsets.end() - 1);
-  for_each_pair([&](std::int64_t row, std::int32_t item) { csr.items[cursor[row]++] = item; });
-  return csr;
-}
-
 // A face as its sorted node ids (-1 padded for triangles), so both elements sharing it agree.
 // Packed into two integers so faces sort and compare as plain integer pairs.
 struct FaceKey {

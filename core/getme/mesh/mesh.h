@@ -36,6 +36,21 @@ struct CompressedRows {
   std::int64_t RowCount() const { return static_cast<std::int64_t>(offsets.size()) - 1; }
 };
 
+// Builds CSR rows from (row, item) pairs: for_each_pair(emit) calls emit(row, item) for every
+// pair, the same pairs in the same order each time (it is called twice: to count, then to fill).
+// Items stay in emission order within a row.
+template <typename ForEachPair>
+CompressedRows BuildRows(std::int64_t rows, ForEachPair&& for_each_pair) {
+  CompressedRows csr;
+  csr.offsets.assign(rows + 1, 0);
+  for_each_pair([&](std::int64_t row, std::int32_t) { ++csr.offsets[row + 1]; });
+  for (std::int64_t row = 0; row < rows; ++row) csr.offsets[row + 1] += csr.offsets[row];
+  csr.items.resize(csr.offsets.back());
+  std::vector<std::int64_t> cursor(csr.offsets.begin(), csr.offsets.end() - 1);
+  for_each_pair([&](std::int64_t row, std::int32_t item) { csr.items[cursor[row]++] = item; });
+  return csr;
+}
+
 // A mixed volume mesh: structure-of-arrays coordinates, connectivity per element type in the
 // paper's node order, free/fixed flags, and the topology the smoothers need (node→element
 // adjacency, boundary nodes, element neighbours). Global element ids follow insertion order, so

@@ -13,17 +13,27 @@ namespace {
 // Fixed chunk size of deterministic reductions: independent of the thread count.
 constexpr std::int64_t kReductionChunk = 8192;
 
-template <typename Kernel>
-void ComputePerElement(const Mesh& mesh, ThreadPool& pool, Kernel&& kernel, auto* out) {
+// visit.template operator()<kType>(element, nodes) for every element, with its nodes gathered,
+// block by block on the pool.
+template <typename Visit>
+void ForEachGatheredElement(const Mesh& mesh, ThreadPool& pool, Visit&& visit) {
   ParallelForEachBlock(
       mesh, pool,
       [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
         constexpr int kNodes = ElementTable<kType>::kNodes;
         for (std::int64_t i = begin; i < end; ++i) {
           const auto nodes = GatherNodes<kType>(mesh, block.nodes.data() + i * kNodes);
-          out[block.elements[i]] = kernel.template operator()<kType>(nodes);
+          visit.template operator()<kType>(block.elements[i], nodes);
         }
       });
+}
+
+template <typename Kernel>
+void ComputePerElement(const Mesh& mesh, ThreadPool& pool, Kernel&& kernel, auto* out) {
+  ForEachGatheredElement(mesh, pool,
+                         [&]<ElementType kType>(ElementId e, const ElementNodes<kType>& nodes) {
+                           out[e] = kernel.template operator()<kType>(nodes);
+                         });
 }
 
 }  // namespace
@@ -49,6 +59,24 @@ std::vector<double> ComputeElementWarpages(const Mesh& mesh, ThreadPool& pool) {
       []<ElementType kType>(const ElementNodes<kType>& nodes) { return Warpage<kType>(nodes); },
       warpage.data());
   return warpage;
+}
+
+ElementMeasures MeasureElements(const Mesh& mesh, ThreadPool& pool) {
+  ElementMeasures measures;
+  const auto count = static_cast<std::size_t>(mesh.element_count());
+  measures.quality.resize(count);
+  measures.warpage.resize(count);
+  measures.valid.resize(count);
+  ForEachGatheredElement(mesh, pool,
+                         [&]<ElementType kType>(ElementId e, const ElementNodes<kType>& nodes) {
+                           // Validity from the same node tetrahedra as the mean ratio (the
+                           // determinants IsValid takes, to the bit), so they are formed once.
+                           const double q = MeanRatioOrInvalid<kType>(nodes);
+                           measures.quality[e] = std::max(0.0, q);
+                           measures.valid[e] = q != kInvalidQuality ? 1 : 0;
+                           measures.warpage[e] = Warpage<kType>(nodes);
+                         });
+  return measures;
 }
 
 std::vector<std::uint8_t> ComputeElementValidity(const Mesh& mesh, ThreadPool& pool) {
@@ -109,9 +137,14 @@ QualitySummary SummarizeQualities(std::span<const double> quality, std::span<con
 }
 
 MeshQuality EvaluateMeshQuality(const Mesh& mesh, ThreadPool& pool, const QualityOptions& options) {
-  const std::vector<double> quality = ComputeElementQualities(mesh, pool);
-  const std::vector<double> warpage = ComputeElementWarpages(mesh, pool);
-  const std::vector<std::uint8_t> valid = ComputeElementValidity(mesh, pool);
+  return SummarizeMeasures(mesh, MeasureElements(mesh, pool), pool, options);
+}
+
+MeshQuality SummarizeMeasures(const Mesh& mesh, const ElementMeasures& measures, ThreadPool& pool,
+                              const QualityOptions& options) {
+  const std::vector<double>& quality = measures.quality;
+  const std::vector<double>& warpage = measures.warpage;
+  const std::vector<std::uint8_t>& valid = measures.valid;
   const QualitySummary summary = SummarizeQualities(quality, mesh.canonical_order(), pool);
 
   MeshQuality result;

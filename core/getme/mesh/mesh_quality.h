@@ -37,6 +37,15 @@ struct QualityOptions {
   int max_listed_invalid = 10;
 };
 
+// Per-element measures of one mesh state, indexed by global element id.
+struct ElementMeasures {
+  std::vector<double> quality;      // mean ratio (Def. 3), 0 for an invalid element
+  std::vector<double> warpage;      // Sec. 4.4; 0 for tetrahedra
+  std::vector<std::uint8_t> valid;  // Def. 2: 1 valid, 0 invalid
+};
+// All three in one pass: each element's nodes are gathered once, not once per measure.
+ElementMeasures MeasureElements(const Mesh& mesh, ThreadPool& pool);
+
 // Per-element mean ratio (0 for invalid elements), indexed by global element id.
 void ComputeElementQualities(const Mesh& mesh, ThreadPool& pool, std::vector<double>& quality);
 std::vector<double> ComputeElementQualities(const Mesh& mesh, ThreadPool& pool);
@@ -45,8 +54,12 @@ std::vector<double> ComputeElementWarpages(const Mesh& mesh, ThreadPool& pool);
 // Per-element validity (Def. 2), indexed by global element id.
 std::vector<std::uint8_t> ComputeElementValidity(const Mesh& mesh, ThreadPool& pool);
 
+// MeasureElements, then SummarizeMeasures.
 MeshQuality EvaluateMeshQuality(const Mesh& mesh, ThreadPool& pool,
                                 const QualityOptions& options = {});
+// The statistics of measures MeasureElements took of `mesh`.
+MeshQuality SummarizeMeasures(const Mesh& mesh, const ElementMeasures& measures, ThreadPool& pool,
+                              const QualityOptions& options = {});
 
 // q_min / q_mean of given per-element qualities, where a negative entry (kInvalidQuality) is an
 // invalid element counted as q = 0; the sum runs over fixed-size chunks in a fixed order so the

@@ -44,4 +44,21 @@ NodeColouring ColourNodes(const Mesh& mesh, std::span<const std::uint8_t> select
   return result;
 }
 
+CompressedRows ElementsByLastColour(const Mesh& mesh, const NodeColouring& colouring) {
+  constexpr std::int32_t kNone = -1;
+  std::vector<std::int32_t> colour(static_cast<std::size_t>(mesh.node_count()), kNone);
+  for (int c = 0; c < colouring.colour_count(); ++c) {
+    for (NodeId node : colouring.Colour(c)) colour[node] = c;
+  }
+  std::vector<std::int32_t> last(static_cast<std::size_t>(mesh.element_count()), kNone);
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    for (NodeId node : mesh.element_nodes(e)) last[e] = std::max(last[e], colour[node]);
+  }
+  return BuildRows(colouring.colour_count(), [&](auto&& emit) {
+    for (ElementId e = 0; e < mesh.element_count(); ++e) {
+      if (last[e] != kNone) emit(last[e], e);
+    }
+  });
+}
+
 }  // namespace getme

@@ -31,4 +31,10 @@ struct NodeColouring {
 // share an element with one node. Serial: it runs once per Smooth() call.
 NodeColouring ColourNodes(const Mesh& mesh, std::span<const std::uint8_t> selected);
 
+// Row c: the elements whose last coloured node (in colour order) has colour c, ascending. A sweep
+// that moves the colours in order leaves these elements alone once colour c has had its turn, so
+// their qualities are then final for the sweep (the polish's worst-element stage stops a sweep it
+// would drop on that). Elements without a coloured node are in no row.
+CompressedRows ElementsByLastColour(const Mesh& mesh, const NodeColouring& colouring);
+
 }  // namespace getme

@@ -330,10 +330,12 @@ enum class StageGoal {
 
 // Sweeps of one stage over the colours; adds its sweeps and refusals to `summary` and reports a
 // progress event per sweep, numbered on from summary.iterations. Leaves the handed-on state in
-// the mesh, context.quality and `current`. Returns false if cancelled.
-bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishState& state,
-              StageGoal goal, std::int64_t max_sweeps, SmoothingContext::Summary& current,
-              PhaseSummary& summary) {
+// the mesh, context.quality and `current`. Returns false if cancelled. `final_after_colour`
+// (ElementsByLastColour) lets the worst-element stage stop a first sweep it would drop; the
+// mean stage passes none.
+bool RunStage(SmoothingContext& context, const NodeColouring& colouring,
+              const CompressedRows* final_after_colour, PolishState& state, StageGoal goal,
+              std::int64_t max_sweeps, SmoothingContext::Summary& current, PhaseSummary& summary) {
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
   for (auto& flag : state.stale) flag.store(1, std::memory_order_relaxed);
@@ -384,6 +386,19 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring, PolishS
       });
       for (std::int64_t r : refused_per_chunk) refused += r;
       for (std::int64_t m : moved_per_chunk) moved += m;
+      // The worst-element stage's first sweep is dropped as soon as it ends below the q_min it
+      // started from (the rule below the sweep). An element whose last movable node has had its
+      // turn keeps its quality for the rest of the sweep, so once one of them is below that
+      // q_min the sweep's end is known: the rest of it would be spent for nothing (on
+      // knowles-mixed-beam, cub_fru and cub_wedge_like this sweep is always dropped). The state
+      // handed on is the same bits: the sweep's start is restored either way.
+      if (goal == StageGoal::kQMin && sweep == 1 && final_after_colour != nullptr) {
+        const std::span<const ElementId> final = final_after_colour->Row(c);
+        if (std::any_of(final.begin(), final.end(),
+                        [&](ElementId e) { return context.quality[e] < best.q_min; })) {
+          break;
+        }
+      }
     }
     if (cancelled) break;
     const SmoothingContext::Summary previous = current;
@@ -456,14 +471,15 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
   if (params.polish_worst_exponent > 1.0 && params.polish_worst_max_sweeps > 0) {
     state.exponent = params.polish_worst_exponent;
     state.q_floor = 0.0;
-    finished = RunStage(context, colouring, state, StageGoal::kQMin, params.polish_worst_max_sweeps,
-                        current, summary);
+    const CompressedRows final_after_colour = ElementsByLastColour(mesh, colouring);
+    finished = RunStage(context, colouring, &final_after_colour, state, StageGoal::kQMin,
+                        params.polish_worst_max_sweeps, current, summary);
   }
   if (finished) {
     state.exponent = 1.0;
     state.q_floor = current.q_min;
-    finished = RunStage(context, colouring, state, StageGoal::kQMean, params.polish_max_sweeps,
-                        current, summary);
+    finished = RunStage(context, colouring, nullptr, state, StageGoal::kQMean,
+                        params.polish_max_sweeps, current, summary);
   }
   // Worst elements that lag far behind the rest after both node-local stages are a coupled
   // plateau (worst_cluster.h): their free nodes move together, then the mean stage runs again
@@ -477,8 +493,8 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
     finished = RunWorstCluster(context, current, summary).ok();
     if (finished && current.q_min > q_min_before) {
       state.q_floor = current.q_min;
-      finished = RunStage(context, colouring, state, StageGoal::kQMean, params.polish_max_sweeps,
-                          current, summary);
+      finished = RunStage(context, colouring, nullptr, state, StageGoal::kQMean,
+                          params.polish_max_sweeps, current, summary);
     }
   }
   context.FinishPhase(summary, current, phase_start);

@@ -223,7 +223,8 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
     }
     result.boundary_slide = summary;
   }
-  result.after = EvaluateMeshQuality(mesh, pool);
+  result.after_elements = MeasureElements(mesh, pool);
+  result.after = SummarizeMeasures(mesh, result.after_elements, pool);
   result.seconds = context.ElapsedSeconds();
   if (params.method == Method::kLaplace && result.after.invalid > 0) {
     return PlainLaplaceInverted(result.after);

@@ -34,6 +34,9 @@ struct BoundarySlideSummary {
 struct SmoothingResult {
   MeshQuality before;
   MeshQuality after;
+  // The per-element measures `after` summarises, for callers that write them out (the CLI's
+  // quality arrays) instead of measuring the same mesh again.
+  ElementMeasures after_elements;
   std::vector<PhaseSummary> phases;  // in the order they ran
   std::int64_t iterations_untangle = 0;
   std::int64_t iterations_simultaneous = 0;

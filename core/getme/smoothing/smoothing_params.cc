@@ -110,18 +110,20 @@ absl::Status SmoothingParams::Validate() const {
     if (auto s = CheckNonNegative(name, value); !s.ok()) return s;
   }
   if (!(penalty_invalid > 0.0)) return OutOfRange("penalty_invalid", penalty_invalid, "> 0");
-  for (const auto& [name, value] : {std::pair<absl::string_view, std::int64_t>{
-                                        "simultaneous_max_iterations", simultaneous_max_iterations},
-                                    {"sequential_max_iterations", sequential_max_iterations},
-                                    {"sequential_stall_iterations", sequential_stall_iterations},
-                                    {"laplace_max_iterations", laplace_max_iterations},
-                                    {"untangle_max_iterations", untangle_max_iterations},
-                                    {"polish_max_sweeps", polish_max_sweeps},
-                                    {"simultaneous_handoff_window", simultaneous_handoff_window},
-                                    {"sequential_handoff_window", sequential_handoff_window},
-                                    {"polish_worst_max_sweeps", polish_worst_max_sweeps},
-                                    {"polish_cluster_max_rounds", polish_cluster_max_rounds},
-                                    {"polish_cluster_iterations", polish_cluster_iterations}}) {
+  for (const auto& [name, value] :
+       {std::pair<absl::string_view, std::int64_t>{"simultaneous_max_iterations",
+                                                   simultaneous_max_iterations},
+        {"sequential_max_iterations", sequential_max_iterations},
+        {"sequential_stall_iterations", sequential_stall_iterations},
+        {"laplace_max_iterations", laplace_max_iterations},
+        {"untangle_max_iterations", untangle_max_iterations},
+        {"polish_max_sweeps", polish_max_sweeps},
+        {"simultaneous_handoff_window", simultaneous_handoff_window},
+        {"sequential_handoff_window", sequential_handoff_window},
+        {"polish_worst_max_sweeps", polish_worst_max_sweeps},
+        {"polish_cluster_max_rounds", polish_cluster_max_rounds},
+        {"polish_cluster_iterations", polish_cluster_iterations},
+        {"polish_cluster_ascent_iterations", polish_cluster_ascent_iterations}}) {
     if (value < 0) return OutOfRange(name, static_cast<double>(value), ">= 0");
   }
   if (sequential_cycle < 1) {

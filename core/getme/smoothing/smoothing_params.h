@@ -148,13 +148,15 @@ struct SmoothingParams {
   // of at most polish_cluster_iterations iterations; the mean stage then runs again above the new
   // q_min. It runs only where q_min < polish_cluster_trigger × q_mean, i.e. where the worst
   // elements lag far behind the rest (pinned thin boundary layers: docs/thin-layers.md); 0 turns
-  // it off. Measured in docs/quality.md#polish.
+  // it off. Measured in docs/quality.md#polish. When the rounds stall, one last round takes up to
+  // polish_cluster_ascent_iterations steepest-ascent steps of the minimum itself (0: none).
   double polish_cluster_trigger = 1.0 / 3.0;
   double polish_cluster_band = 0.25;
   double polish_cluster_exponent = 20.0;
   double polish_cluster_tolerance = 2e-3;
   std::int64_t polish_cluster_max_rounds = 30;
   std::int64_t polish_cluster_iterations = 200;
+  std::int64_t polish_cluster_ascent_iterations = 200;
   // Each node first tries its Newton step times this factor (successive over-relaxation), then
   // the plain step, then halvings. Measured in docs/quality.md#polish: on the thin-layer artery
   // meshes 1.8 needs 17 sweeps where 1.0 needs 97, for a higher q_mean. 1 = plain Gauss–Seidel.

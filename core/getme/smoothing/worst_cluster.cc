@@ -5,12 +5,15 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numeric>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "getme/elements/mean_ratio_gradient.h"
 #include "getme/elements/vec3.h"
 #include "getme/mesh/node_neighbours.h"
+#include "getme/smoothing/min_norm_point.h"
 #include "getme/smoothing/whole_power.h"
 
 namespace getme {
@@ -28,8 +31,16 @@ constexpr double kConverged = 1e-10;
 // The first step moves no node by more than this share of its scale (Cluster::scale2): L-BFGS
 // has no curvature yet, and the thin layers this stage is for invert under larger steps.
 constexpr double kFirstStepShare = 0.02;
+// The max-min ascent after L-BFGS (AscendMinimum): the elements it treats as
+// active, those within a share of the minimum that starts at kActiveShare and widens fourfold
+// up to kMaxActiveShare while no step helps; at most kMaxActive of them, the lowest; and the
+// first trial step, as a share of the largest node's scale.
+constexpr double kActiveShare = 1e-4;
+constexpr double kMaxActiveShare = 0.03;
+constexpr std::size_t kMaxActive = 48;
+constexpr double kAscentFirstShare = 0.01;
 // Elements per ParallelFor chunk of an evaluation: each costs a few hundred nanoseconds.
-constexpr std::int64_t kElementGrain = 64;
+constexpr std::int64_t kClusterElementGrain = 64;
 
 struct Cluster {
   std::vector<NodeId> nodes;        // V: the worst elements' free nodes, ascending
@@ -69,12 +80,7 @@ class ClusterObjective {
   // the lowest q_e in `min_q`; with `gradient`, ∇f over V (3 entries per node, V's order).
   double Evaluate(double& min_q, std::vector<double>* gradient) {
     const Mesh& mesh = context_.mesh;
-    const bool with_gradient = gradient != nullptr;
-    context_.pool.ParallelFor(static_cast<std::int64_t>(cluster_.elements.size()), kElementGrain,
-                              [&](std::int64_t begin, std::int64_t end) {
-                                for (std::int64_t i = begin; i < end; ++i)
-                                  EvaluateElement(mesh, i, with_gradient);
-                              });
+    EvaluateElements(gradient != nullptr);
     double f = 0.0;
     min_q = std::numeric_limits<double>::infinity();
     if (gradient) gradient->assign(3 * cluster_.nodes.size(), 0.0);
@@ -96,6 +102,42 @@ class ClusterObjective {
     }
     return f;
   }
+
+  // Every element of B's quality and, with_gradient, its gradient over its nodes in V, into
+  // terms(); returns the lowest quality, 0 if an element is invalid.
+  double EvaluateElements(bool with_gradient) {
+    const Mesh& mesh = context_.mesh;
+    context_.pool.ParallelFor(static_cast<std::int64_t>(cluster_.elements.size()),
+                              kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
+                                for (std::int64_t i = begin; i < end; ++i)
+                                  EvaluateElement(mesh, i, with_gradient);
+                              });
+    double min_q = std::numeric_limits<double>::infinity();
+    for (const ElementTerm& term : terms_) {
+      if (!(term.quality > 0.0)) return 0.0;
+      min_q = std::min(min_q, term.quality);
+    }
+    return min_q;
+  }
+  // Only the elements of B at `indices` (positions in B): their terms with gradients, or, with
+  // `qualities`, just their qualities into it (one per index) and terms() left as it was.
+  void EvaluateSubset(std::span<const std::uint32_t> indices, std::vector<double>* qualities) {
+    const Mesh& mesh = context_.mesh;
+    if (qualities != nullptr) qualities->resize(indices.size());
+    context_.pool.ParallelFor(static_cast<std::int64_t>(indices.size()), kClusterElementGrain,
+                              [&](std::int64_t begin, std::int64_t end) {
+                                for (std::int64_t j = begin; j < end; ++j) {
+                                  const std::size_t i = indices[static_cast<std::size_t>(j)];
+                                  if (qualities == nullptr) {
+                                    EvaluateElement(mesh, static_cast<std::int64_t>(i), true);
+                                  } else {
+                                    (*qualities)[static_cast<std::size_t>(j)] =
+                                        ElementQualityOrInvalid(mesh, cluster_.elements[i]);
+                                  }
+                                }
+                              });
+  }
+  const std::vector<ElementTerm>& terms() const { return terms_; }
 
  private:
   void EvaluateElement(const Mesh& mesh, std::int64_t i, bool with_gradient) {
@@ -149,18 +191,22 @@ void WriteCoordinates(Mesh& mesh, const Cluster& cluster, const std::vector<doub
 // A sliding node's share of the gradient turned into its surface (or curve): the move the
 // projection keeps of a small step along it, so that the search directions, and with them the
 // line search's slope, are ones the node can follow. Exact on a flat face or a straight edge.
+Vec3 TangentialNodeGradient(const SmoothingContext& context, const Cluster& cluster, std::size_t i,
+                            const Vec3& at, const Vec3& gradient) {
+  const double length = gradient.norm();
+  if (!(length > 0.0)) return gradient;
+  // A step of a thousandth of the node's own length scale.
+  const double epsilon = 1e-3 * std::sqrt(cluster.scale2[i]) / length;
+  return (context.Placed(cluster.nodes[i], at + epsilon * gradient, at) - at) / epsilon;
+}
+
 void TangentialGradient(const SmoothingContext& context, const Cluster& cluster,
                         const std::vector<double>& x, std::vector<double>& g) {
   for (std::size_t i = 0; i < cluster.nodes.size(); ++i) {
-    const NodeId node = cluster.nodes[i];
-    if (!context.sliding[node]) continue;
-    const Vec3 at(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
-    const Vec3 gradient(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
-    const double length = gradient.norm();
-    if (!(length > 0.0)) continue;
-    // A step of a thousandth of the node's own length scale.
-    const double epsilon = 1e-3 * std::sqrt(cluster.scale2[i]) / length;
-    const Vec3 along = (context.Placed(node, at + epsilon * gradient, at) - at) / epsilon;
+    if (!context.sliding[cluster.nodes[i]]) continue;
+    const Vec3 along =
+        TangentialNodeGradient(context, cluster, i, Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]),
+                               Vec3(g[3 * i], g[3 * i + 1], g[3 * i + 2]));
     for (int k = 0; k < 3; ++k) g[3 * i + k] = along[k];
   }
 }
@@ -305,6 +351,182 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
   WriteCoordinates(mesh, cluster, best_x);
 }
 
+// After L-BFGS on the smooth stand-in f, the max-min problem itself: steepest ascent of
+// min_{e∈B} q_e over V. The stand-in weighs every element near the minimum, so where many are
+// near it its minimiser trades the lowest against the others and stops short of the highest
+// reachable minimum. Each iteration takes the elements within a small share of the minimum (the
+// active ones), the point of smallest norm in the convex hull of their gradients in the nodes'
+// own metric D (min_norm_point.h) as the direction, d = D Σ λ_e ∇q_e, which raises every active
+// element at the rate |d|²_{D⁻¹} or more, and the step along d that gives the highest minimum over
+// all of B, found by doubling or halving. If no step raises the minimum the active set widens
+// (an element just above the minimum may be what blocks the direction), until kMaxActiveShare.
+// d moves only the active elements' nodes, so a step re-evaluates only the elements around them.
+// Invalid elements count as q = 0, so the minimum never admits one. Every sum runs in a fixed
+// order, so any thread count gives the same bits. Leaves the best iterate in the mesh.
+void AscendMinimum(SmoothingContext& context, const Cluster& cluster,
+                   const std::vector<int>& variable_of, ClusterObjective& objective) {
+  Mesh& mesh = context.mesh;
+  const std::size_t node_count = cluster.nodes.size();
+  std::vector<double> x;
+  ReadCoordinates(mesh, cluster, x);
+  double min_q = objective.EvaluateElements(true);
+  if (!(min_q > 0.0)) return;
+  // Per node of V, the positions in B of its elements.
+  std::vector<std::vector<std::uint32_t>> elements_of(node_count);
+  for (std::size_t v = 0; v < node_count; ++v) {
+    for (const ElementId e : mesh.node_elements(cluster.nodes[v])) {
+      const auto at = std::lower_bound(cluster.elements.begin(), cluster.elements.end(), e);
+      elements_of[v].push_back(static_cast<std::uint32_t>(at - cluster.elements.begin()));
+    }
+  }
+  const auto position = [&](std::size_t v) { return Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]); };
+  const auto place = [&](std::size_t v, const Vec3& p) {
+    mesh.x()[cluster.nodes[v]] = p[0];
+    mesh.y()[cluster.nodes[v]] = p[1];
+    mesh.z()[cluster.nodes[v]] = p[2];
+  };
+  // An active element's gradient: (node of V, ∂q/∂p) for each of its nodes in V.
+  using SparseGradient = std::vector<std::pair<std::size_t, Vec3>>;
+  std::vector<SparseGradient> gradients;
+  std::vector<std::size_t> candidates;
+  std::vector<std::size_t> moved;  // nodes of V the direction moves, ascending
+  std::vector<std::uint8_t> is_moved(node_count, 0);
+  std::vector<Vec3> direction(node_count, Vec3::Zero());
+  std::vector<Vec3> trial(node_count), best_trial(node_count);
+  std::vector<std::uint8_t> affected_mark(cluster.elements.size(), 0);
+  std::vector<std::uint32_t> affected;
+  std::vector<double> trial_quality;
+  for (std::int64_t iteration = 0;
+       iteration < context.params.polish_cluster_ascent_iterations && !context.Cancelled();
+       ++iteration) {
+    const std::vector<ElementTerm>& terms = objective.terms();
+    candidates.clear();
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+      if (terms[i].quality <= min_q * (1.0 + kMaxActiveShare)) candidates.push_back(i);
+    }
+    std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+      return terms[a].quality != terms[b].quality ? terms[a].quality < terms[b].quality : a < b;
+    });
+    bool stepped = false;
+    for (double share = kActiveShare; share <= kMaxActiveShare && !stepped; share *= 4.0) {
+      std::size_t active = 0;
+      while (active < candidates.size() && active < kMaxActive &&
+             terms[candidates[active]].quality <= min_q * (1.0 + share)) {
+        ++active;
+      }
+      // The active elements' gradients over V, turned into the sliding nodes' surfaces.
+      gradients.assign(active, {});
+      for (std::size_t a = 0; a < active; ++a) {
+        const std::size_t i = candidates[a];
+        const std::span<const NodeId> ids = mesh.element_nodes(cluster.elements[i]);
+        for (std::size_t k = 0; k < ids.size(); ++k) {
+          const int v = variable_of[ids[k]];
+          if (v < 0) continue;
+          const std::size_t node = static_cast<std::size_t>(v);
+          Vec3 gradient = terms[i].gradient[k];
+          if (context.sliding[ids[k]]) {
+            gradient = TangentialNodeGradient(context, cluster, node, position(node), gradient);
+          }
+          gradients[a].emplace_back(node, gradient);
+        }
+      }
+      Eigen::MatrixXd gram(static_cast<Eigen::Index>(active), static_cast<Eigen::Index>(active));
+      for (std::size_t a = 0; a < active; ++a) {
+        for (std::size_t b = 0; b <= a; ++b) {
+          double sum = 0.0;
+          for (const auto& [u, gu] : gradients[a]) {
+            for (const auto& [w, gw] : gradients[b]) {
+              if (u == w) sum += gu.dot(gw) * cluster.scale2[u];
+            }
+          }
+          gram(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = sum;
+          gram(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = sum;
+        }
+      }
+      const MinNormPoint hull = MinNormPointOfHull(gram);
+      if (!(hull.squared_norm > 0.0)) continue;  // a stationary point of this active set
+      for (const std::size_t v : moved) {
+        direction[v].setZero();
+        is_moved[v] = 0;
+      }
+      moved.clear();
+      for (std::size_t a = 0; a < active; ++a) {
+        for (const auto& [v, gradient] : gradients[a]) {
+          if (!is_moved[v]) {
+            is_moved[v] = 1;
+            moved.push_back(v);
+          }
+          direction[v] += hull.weights[static_cast<Eigen::Index>(a)] * gradient;
+        }
+      }
+      std::sort(moved.begin(), moved.end());
+      double largest = 0.0;
+      for (const std::size_t v : moved) {
+        direction[v] *= cluster.scale2[v];
+        largest = std::max(largest, direction[v].norm() / std::sqrt(cluster.scale2[v]));
+      }
+      if (!(largest > 0.0)) continue;
+      // The elements the move reaches, and the lowest quality of the rest, which stays.
+      for (const std::uint32_t i : affected) affected_mark[i] = 0;
+      affected.clear();
+      for (const std::size_t v : moved) {
+        for (const std::uint32_t i : elements_of[v]) {
+          if (!affected_mark[i]) {
+            affected_mark[i] = 1;
+            affected.push_back(i);
+          }
+        }
+      }
+      std::sort(affected.begin(), affected.end());
+      double unmoved_min = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < terms.size(); ++i) {
+        if (!affected_mark[i]) unmoved_min = std::min(unmoved_min, terms[i].quality);
+      }
+      // Doubling while the minimum keeps rising, halving until it rises at all.
+      double step = kAscentFirstShare / largest;
+      double best_q = min_q;
+      const auto try_step = [&](double length) {
+        for (const std::size_t v : moved) {
+          const Vec3 from = position(v);
+          trial[v] = from + length * direction[v];
+          if (context.sliding[cluster.nodes[v]]) {
+            trial[v] = context.Placed(cluster.nodes[v], trial[v], from);
+          }
+          place(v, trial[v]);
+        }
+        objective.EvaluateSubset(affected, &trial_quality);
+        double q = unmoved_min;
+        for (const double quality : trial_quality) q = std::min(q, quality > 0.0 ? quality : 0.0);
+        if (q > best_q) {
+          best_q = q;
+          for (const std::size_t v : moved) best_trial[v] = trial[v];
+          return true;
+        }
+        return false;
+      };
+      if (try_step(step)) {
+        for (int grow = 0; grow < 10 && try_step(step *= 2.0);) ++grow;
+      } else {
+        for (int shrink = 0; shrink < 20 && !try_step(step *= 0.5);) ++shrink;
+      }
+      if (best_q > min_q) {
+        for (const std::size_t v : moved) {
+          for (int c = 0; c < 3; ++c) x[3 * v + c] = best_trial[v][c];
+        }
+        stepped = true;
+      }
+      for (const std::size_t v : moved) place(v, position(v));
+    }
+    if (!stepped) break;
+    const double previous = min_q;
+    objective.EvaluateSubset(affected, nullptr);
+    min_q = std::numeric_limits<double>::infinity();
+    for (const ElementTerm& term : objective.terms()) min_q = std::min(min_q, term.quality);
+    if (!(min_q > previous * (1.0 + 1e-9))) break;
+  }
+  WriteCoordinates(mesh, cluster, x);
+}
+
 // The round's cluster: the elements within the band above q_min, their free nodes, and every
 // element around those nodes. Empty nodes if the worst element has no free node: then nothing
 // can lift q_min.
@@ -363,9 +585,18 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
   std::vector<std::uint8_t> in_cluster(mesh.element_count(), 0);
   std::vector<double> start;
   std::vector<double> start_quality;
-  for (std::int64_t round = 1; round <= params.polish_cluster_max_rounds; ++round) {
+  // The rounds minimise the smooth stand-in until they stall; then one last round ascends the
+  // minimum itself (AscendMinimum) from where they stalled. Run from the start, the ascent
+  // settles on the first local max-min point, which on the arteries is lower than where the
+  // stand-in's rounds, each re-centred on the new worst elements, go on to (docs/thin-layers.md).
+  bool ascending = false;
+  for (std::int64_t round = 1; round <= params.polish_cluster_max_rounds + 1; ++round) {
     if (context.Cancelled()) {
       return absl::CancelledError("smoothing cancelled during the polish's worst-cluster stage");
+    }
+    if (round > params.polish_cluster_max_rounds) {
+      if (params.polish_cluster_ascent_iterations == 0) break;
+      ascending = true;
     }
     const double q_start = current.q_min;
     if (!(q_start > 0.0)) break;
@@ -376,24 +607,34 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
     for (std::size_t i = 0; i < cluster.elements.size(); ++i) {
       start_quality[i] = context.quality[cluster.elements[i]];
     }
-    Minimise(context, cluster, variable_of, q_start);
+    if (ascending) {
+      ClusterObjective objective(context, cluster, variable_of, q_start);
+      AscendMinimum(context, cluster, variable_of, objective);
+    } else {
+      Minimise(context, cluster, variable_of, q_start);
+    }
     // The stored qualities get MeanRatioOrInvalid's bits, as every other phase writes them.
     for (ElementId e : cluster.elements) context.quality[e] = ElementQualityOrInvalid(mesh, e);
     const SmoothingContext::Summary after = context.Summarize();
     for (NodeId node : cluster.nodes) variable_of[node] = -1;
     for (ElementId e : cluster.elements) in_cluster[e] = 0;
-    if (!(after.invalid == 0 && after.q_min > q_start)) {
+    const bool kept = after.invalid == 0 && after.q_min > q_start;
+    if (!kept) {
       WriteCoordinates(mesh, cluster, start);
       for (std::size_t i = 0; i < cluster.elements.size(); ++i) {
         context.quality[cluster.elements[i]] = start_quality[i];
       }
-      break;
+    } else {
+      current = after;
+      ++summary.iterations;
+      context.Report({Phase::kPolish, summary.iterations, current.q_min, current.q_mean,
+                      current.invalid, 0, context.ElapsedSeconds(), false});
     }
-    current = after;
-    ++summary.iterations;
-    context.Report({Phase::kPolish, summary.iterations, current.q_min, current.q_mean,
-                    current.invalid, 0, context.ElapsedSeconds(), false});
-    if (after.q_min < q_start * (1.0 + params.polish_cluster_tolerance)) break;
+    if (ascending) break;
+    if (!kept || after.q_min < q_start * (1.0 + params.polish_cluster_tolerance)) {
+      if (params.polish_cluster_ascent_iterations == 0) break;
+      ascending = true;
+    }
   }
   return absl::OkStatus();
 }

@@ -22,6 +22,12 @@ namespace getme {
 //   3. keeps the result only if the mesh's q_min rose, else restores the round's start and ends.
 // Rounds repeat while q_min rises by more than params.polish_cluster_tolerance (relative), up to
 // params.polish_cluster_max_rounds, each of at most params.polish_cluster_iterations iterations.
+// Then one last round, on the cluster where they stalled, ascends the minimum itself: up to
+// params.polish_cluster_ascent_iterations steps along the point of smallest norm in the convex
+// hull of the nearly-worst elements' gradients (min_norm_point.h), each the step length along it
+// that gives the highest min q over B; kept, as a round is, only if the mesh's q_min rose. The
+// stand-in's rounds come first because they find higher plateaus: run from the start, the ascent
+// settles on the first local max-min point it meets.
 // Element evaluations run in parallel and are summed in a fixed order, so any thread count gives
 // the same bits. q_min never falls; q_mean may fall a little, which is why RunPolish runs its mean
 // stage again afterwards. context.quality stays exact; `current` is the state handed on. One

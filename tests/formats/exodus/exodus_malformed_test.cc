@@ -67,6 +67,9 @@ INSTANTIATE_TEST_SUITE_P(
                       "element; getme keeps sides of volume elements only"},
         MalformedCase{"node_set_out_of_range",
                       "node set 4 ('clamp'): entry 2: node 5 out of range 1..4"},
+        MalformedCase{"connect_over_other_dimensions",
+                      "variable 'connect1' has dimensions (num_el_in_blk1, len_string); Exodus "
+                      "II defines it over (num_el_in_blk1, num_nod_per_el1)"},
         MalformedCase{"polyhedron",
                       "element block 1 ('poly'): element type 'NFACED' is not supported: getme "
                       "reads linear TETRA, PYRAMID, WEDGE and HEX blocks and passes SHELL/QUAD, "

@@ -106,10 +106,13 @@ def write_exodus(path, points, blocks, side_sets=(), node_sets=(), num_dim=3,
                 per = b.get("nodes_per_elem", len(b["cells"][0]))
                 nc.createDimension(f"num_el_in_blk{k}", len(b["cells"]))
                 nc.createDimension(f"num_nod_per_el{k}", per)
-                conn = nc.createVariable(f"connect{k}", "i4",
-                                         (f"num_el_in_blk{k}", f"num_nod_per_el{k}"))
+                dims = b.get("connect_dims", (f"num_el_in_blk{k}", f"num_nod_per_el{k}"))
+                conn = nc.createVariable(f"connect{k}", "i4", dims)
                 conn.elem_type = b["type"]
-                conn[:] = np.array(b["cells"], dtype=np.int64).reshape(-1, per) + 1
+                if "connect_dims" in b:  # malformed on purpose: node 1 wherever it reaches
+                    conn[:] = np.ones(conn.shape, dtype=np.int32)
+                else:
+                    conn[:] = np.array(b["cells"], dtype=np.int64).reshape(-1, per) + 1
         if side_sets:
             nc.createDimension("num_side_sets", len(side_sets))
             nc.createVariable("ss_status", "i4", ("num_side_sets",))[:] = [1] * len(side_sets)
@@ -268,6 +271,11 @@ def malformed(directory):
     bad("duplicate_block_ids", tet + [(1, 1, 1)],
         [dict(id=3, name="a", type="TETRA", cells=[[0, 1, 2, 3]]),
          dict(id=3, name="b", type="TETRA", cells=[[1, 2, 3, 4]])])
+    # The block says 4 nodes per element, its connectivity variable is 33 wide: the Exodus
+    # library read all 33 into a buffer for 4 (found by fuzzing, 2026-11-27).
+    bad("connect_over_other_dimensions", tet,
+        [dict(id=1, name="solid", type="TETRA", cells=[[0, 1, 2, 3]],
+              connect_dims=("num_el_in_blk1", "len_string"))])
     bad("file_size_array", tet, [dict(id=1, name="solid", type="TETRA", cells=[[0, 1, 2, 3]])])
     with netCDF4.Dataset(os.path.join(directory, "bad_file_size_array.exo"), "a") as nc:
         nc.file_size = np.arange(1000, dtype=np.int32)
