@@ -238,10 +238,15 @@ void HttpGateway::AddRoutes() {
         }
         ReplyError(res, absl::InternalError(what));
       });
-  http_->set_logger([this](const httplib::Request& req, const httplib::Response& res) {
+  // Counted before the response is written (httplib's logger runs after it): a client that scrapes
+  // /metrics right after its reply arrived must find that reply counted.
+  http_->set_post_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    std::string job_id;
+    metrics_.CountHttpRequest(RouteOf(req.path, job_id), res.status);
+  });
+  http_->set_logger([](const httplib::Request& req, const httplib::Response& res) {
     std::string job_id;
     const std::string route = RouteOf(req.path, job_id);
-    metrics_.CountHttpRequest(route, res.status);
     // Probes and scrapes come every few seconds: keep them out of the info log.
     const bool routine =
         route == "/healthz" || route == "/readyz" || route == "/metrics" || route == "/dashboard";

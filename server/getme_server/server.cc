@@ -135,6 +135,9 @@ class SmootherServerImpl final : public SmootherServer {
     grpc::reflection::InitProtoReflectionServerBuilderPlugin();
     grpc::ServerBuilder builder;
     builder.AddListeningPort(address, GrpcCredentials(tls_), &port_);
+    // gRPC sets SO_REUSEPORT by default: a second server on a taken port would start and silently
+    // take half its connections. One port, one server; the second one is refused.
+    builder.AddChannelArgument(GRPC_ARG_ALLOW_REUSEPORT, 0);
     // Requests arrive in chunks, so this bounds one message, not a mesh; gRPC itself refuses a
     // larger one with RESOURCE_EXHAUSTED.
     builder.SetMaxReceiveMessageSize(max_message_bytes_);

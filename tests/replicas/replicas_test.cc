@@ -1,10 +1,13 @@
 // Several real getme-server processes sharing one real redis-server (--job_store, issue 18): any
 // replica answers for any job, a killed replica loses nothing, and the cluster's queue limit holds.
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
+#include <iostream>
 #include <memory>
 #include <set>
 #include <string>
@@ -64,11 +67,21 @@ class ReplicasTest : public ::testing::Test {
   virtual std::string StoreUrl() const { return redis_->url(); }
 
   void TearDown() override {
+    if (HasFailure()) {
+      // A failed call names only the replica's address: what the replica itself said tells why.
+      for (std::size_t i = 0; i < replicas_.size(); ++i) {
+        std::cerr << "---- replica " << i << " (pid " << replicas_[i].process.pid << ", "
+                  << replicas_[i].address << ") log:\n"
+                  << ReadFile(replicas_[i].process.log_path);
+      }
+    }
     for (Replica& replica : replicas_) {
-      if (replica.process.pid > 0 && kill(replica.process.pid, 0) == 0) {
+      // Still our unreaped child: a replica the test already reaped may have a reused pid now.
+      if (replica.process.pid > 0 && waitpid(replica.process.pid, nullptr, WNOHANG) == 0) {
         kill(replica.process.pid, SIGKILL);
         WaitForExit(replica.process.pid, absl::Seconds(10));
       }
+      if (!HasFailure()) std::remove(replica.process.log_path.c_str());
     }
   }
 

@@ -99,6 +99,33 @@ TEST(ProcessFaultsTest, KilledServerIsUnavailableAndARetryAfterRestartSucceedsOn
   std::remove(first_log.c_str());
 }
 
+// gRPC would share a taken port through SO_REUSEPORT and split the connections between both
+// servers; a second server on the same port must be refused instead.
+TEST(ProcessFaultsTest, ASecondServerOnATakenPortIsRefused) {
+  const std::string first_log = LogPath("first-on-port");
+  const ServerProcess first = SpawnServer(first_log, {"--workers=1"});
+  ASSERT_GT(first.pid, 0);
+  const int port = WaitForPort(first_log);
+  ASSERT_GT(port, 0) << ReadFile(first_log);
+  const std::string address = absl::StrCat("127.0.0.1:", port);
+
+  const std::string second_log = LogPath("second-on-port");
+  const ServerProcess second = SpawnServer(second_log, {absl::StrCat("--listen=", address)});
+  ASSERT_GT(second.pid, 0);
+  EXPECT_EQ(WaitForExit(second.pid, absl::Seconds(30)), 1) << ReadFile(second_log);
+  EXPECT_THAT(ReadFile(second_log), HasSubstr(absl::StrCat("cannot listen on '", address, "'")));
+
+  {
+    // The first one still answers, alone.
+    remote::SmootherClient client(remote::SmootherClient::CreateChannel(address));
+    EXPECT_TRUE(client.ListJobs().ok());
+  }
+  kill(first.pid, SIGTERM);
+  EXPECT_EQ(WaitForExit(first.pid, absl::Seconds(30)), 0);
+  std::remove(first_log.c_str());
+  std::remove(second_log.c_str());
+}
+
 TEST(RetryPolicyTest, RetriesOnlyUnavailableAttemptsMarkedSafeAndSaysHowMany) {
   remote::CallOptions call;
   call.retry.max_attempts = 3;

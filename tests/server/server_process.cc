@@ -32,6 +32,9 @@ ServerProcess SpawnServer(const std::string& log_path, const std::vector<std::st
   std::vector<char*> argv;
   for (std::string& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
+  // Emptied here, before the fork: WaitForPort reads the file at once, and an earlier process
+  // with the same pid (pids wrap) may have left a log of this name naming its own, dead, port.
+  std::ofstream(log_path, std::ios::trunc).close();
   child.pid = fork();
   if (child.pid == 0) {
     FILE* log = std::freopen(log_path.c_str(), "w", stderr);
