@@ -206,16 +206,17 @@ class SmootherServerImpl final : public SmootherServer {
 
  private:
   void Drain(absl::Duration grace) {
-    spdlog::info("shutting down: no new calls or jobs; running jobs may finish within {}",
-                 absl::FormatDuration(grace));
-    if (server_ != nullptr)
-      server_->GetHealthCheckService()->SetServingStatus(false);  // all services
+    // Refusing first: whoever sees the log line or NOT_SERVING can rely on new jobs being refused.
     registry_.StopAccepting("the server is shutting down");
     if (store_ != nullptr) {
       // Jobs queued in the shared store stay there for the other replicas.
       store_->StopAccepting();
       store_workers_->StopTaking();
     }
+    if (server_ != nullptr)
+      server_->GetHealthCheckService()->SetServingStatus(false);  // all services
+    spdlog::info("shutting down: no new calls or jobs; running jobs may finish within {}",
+                 absl::FormatDuration(grace));
     const absl::Time jobs_deadline = absl::Now() + grace;
     // gRPC keeps taking calls while jobs run out their grace: new jobs are refused with
     // UNAVAILABLE by the handlers (a call arriving during gRPC's own shutdown would be

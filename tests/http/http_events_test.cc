@@ -5,6 +5,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <string>
 #include <thread>
 
@@ -55,8 +56,10 @@ TEST(HttpEventsTest, StreamCarriesEveryProgressEventInOrderThenResultThenEnd) {
   const std::string blocker = PostJob(test, ToWire(TetBlock(4, 0.3)), LongRunningParameters());
   const std::string id = PostJob(test, ToWire(TetBlock(6, 0.3)), SimultaneousOnly());
   std::vector<SseEvent> events;
-  std::thread reader([&] { events = ReadEventStream(*test.http, id); });
-  absl::SleepFor(absl::Milliseconds(300));
+  std::atomic<bool> opened{false};
+  std::thread reader([&] { events = ReadEventStream(*test.http, id, &opened); });
+  const absl::Time deadline = absl::Now() + absl::Seconds(30);
+  while (!opened.load() && absl::Now() < deadline) absl::SleepFor(absl::Milliseconds(5));
   httplib::Client other("127.0.0.1", test.grpc.server->http_port());
   ASSERT_EQ(HttpPost(other, "/v1/jobs/" + blocker + ":cancel", "").status, 200);
   reader.join();

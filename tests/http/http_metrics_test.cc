@@ -44,7 +44,8 @@ TEST(HttpMetricsTest, CountersFollowRpcsJobsAndWork) {
       Submit(*test.grpc.stub, SmoothRequests(ToWire(TetBlock(4, 0.3)), LongRunningParameters()));
   ASSERT_TRUE(running.ok());
   WaitForState(*test.grpc.stub, running->job_id(), v1::JOB_STATE_RUNNING);
-  absl::SleepFor(absl::Milliseconds(200));
+  absl::SleepFor(absl::Milliseconds(200));  // the cancelled job's duration is over 0.2 s
+  WaitForProgress(*test.grpc.stub, running->job_id());  // its rate has something to count
   auto during = ScrapeMetrics(*test.http);
   EXPECT_EQ(during.at("getme_active_workers"), 1);
   EXPECT_EQ(during.at(R"(getme_jobs{state="running"})"), 1);

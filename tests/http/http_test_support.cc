@@ -82,11 +82,13 @@ std::string CreateJobJson(const v1::Mesh& mesh, const v1::SmoothingParameters& p
   return json;
 }
 
-std::vector<SseEvent> ReadEventStream(httplib::Client& client, const std::string& job_id) {
+std::vector<SseEvent> ReadEventStream(httplib::Client& client, const std::string& job_id,
+                                      std::atomic<bool>* opened) {
   std::string text;
   auto result = client.Get(absl::StrCat("/v1/jobs/", job_id, "/events"),
-                           [&text](const char* data, std::size_t length) {
+                           [&text, opened](const char* data, std::size_t length) {
                              text.append(data, length);
+                             if (opened != nullptr) opened->store(true);
                              return true;
                            });
   EXPECT_TRUE(result) << "event stream failed: " << httplib::to_string(result.error());

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <string>
@@ -53,6 +54,9 @@ struct SseEvent {
   std::string data;
 };
 // Reads GET /v1/jobs/{id}/events until the server closes the stream.
-std::vector<SseEvent> ReadEventStream(httplib::Client& client, const std::string& job_id);
+// The whole event stream of a job, read to its end. `opened`, if given, is set when the first
+// bytes arrive: the server has attached the watcher by then.
+std::vector<SseEvent> ReadEventStream(httplib::Client& client, const std::string& job_id,
+                                      std::atomic<bool>* opened = nullptr);
 
 }  // namespace getme::server::testing

@@ -43,9 +43,10 @@ TEST_F(RedisBlockingTest, BlpopIsWokenByAPushFromAnotherThread) {
     waited = absl::Now() - start;
   });
   // The pusher shares the client: the waiter holds one connection, the push takes another.
-  absl::SleepFor(absl::Milliseconds(100));
+  const bool blocked = WaitForBlockedClients(*client, 1);
   absl::StatusOr<RedisReply> pushed = client->Command({"RPUSH", "queue", "job-7"});
   waiter.join();
+  ASSERT_TRUE(blocked);
   ASSERT_TRUE(pushed.ok()) << pushed.status();
   ASSERT_TRUE(popped.ok()) << popped.status();
   EXPECT_EQ(*popped, RedisReply::Array({RedisReply::String("queue"), RedisReply::String("job-7")}));

@@ -62,12 +62,13 @@ TEST_P(RedisFailureTest, AKilledServerClosesEveryIdleConnection) {
   std::unique_ptr<RedisClient> client = ConnectClient();
   ASSERT_NE(client, nullptr);
   // Two connections in the pool: one held by a BLPOP while another pings.
-  std::thread waiter([&] {
-    (void)client->Blocking({"BLPOP", "queue", "0.3"}, absl::Milliseconds(300));
-  });
-  absl::SleepFor(absl::Milliseconds(50));
-  ASSERT_TRUE(client->Command({"PING"}).ok());
+  std::thread waiter([&] { (void)client->Blocking({"BLPOP", "queue", "10"}, absl::Seconds(10)); });
+  const bool blocked = WaitForBlockedClients(*client, 1);
+  const bool pinged = client->Command({"PING"}).ok();
+  (void)client->Command({"RPUSH", "queue", "wake"});  // ends the BLPOP
   waiter.join();
+  ASSERT_TRUE(blocked);
+  ASSERT_TRUE(pinged);
   ASSERT_EQ(client->open_connections(), 2);
 
   server_->Kill();

@@ -5,6 +5,9 @@
 #include <memory>
 #include <string>
 
+#include "absl/strings/match.h"
+#include "absl/strings/str_cat.h"
+#include "absl/time/clock.h"
 #include "redis/redis_address.h"
 #include "redis/redis_client.h"
 #include "redis_server_process.h"
@@ -55,6 +58,20 @@ class RedisServerTest : public ::testing::Test {
         RedisClient::Connect(Address(), absl::Seconds(5), command_timeout);
     EXPECT_TRUE(client.ok()) << client.status();
     return client.ok() ? *std::move(client) : nullptr;
+  }
+
+  // Waits, 10 s at most, until the server reports `count` clients blocked (in BLPOP, say): a
+  // thread told to block has then really taken a connection of its own. `client` polls with
+  // connections of its pool, which the blocked thread does not hold.
+  static bool WaitForBlockedClients(RedisClient& client, int count) {
+    const std::string wanted = absl::StrCat("blocked_clients:", count, "\r\n");
+    const absl::Time deadline = absl::Now() + absl::Seconds(10);
+    while (absl::Now() < deadline) {
+      absl::StatusOr<RedisReply> info = client.Command({"INFO", "clients"});
+      if (info.ok() && absl::StrContains(info->str(), wanted)) return true;
+      absl::SleepFor(absl::Milliseconds(5));
+    }
+    return false;
   }
 
   std::unique_ptr<RedisServerProcess> server_;

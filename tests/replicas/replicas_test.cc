@@ -35,8 +35,10 @@ namespace {
 
 using redis::testing::RedisServerProcess;
 
-// Short enough that a killed replica's job restarts within the test's patience.
-constexpr char kLease[] = "--job_lease=1s";
+// Short enough that a killed replica's job restarts well within the test's patience (RunnerOf
+// waits 30 s); long enough that a live replica's renewals (every third of it) survive a stall of
+// a few seconds on a loaded machine, which would otherwise hand its job to another replica.
+constexpr char kLease[] = "--job_lease=4s";
 
 struct Replica {
   ServerProcess process;

@@ -33,13 +33,6 @@ std::shared_ptr<grpc::Channel> NewChannel(const TestServer& test,
                                    grpc::InsecureChannelCredentials(), arguments);
 }
 
-std::vector<v1::Job> ListJobs(v1::Smoother::Stub& stub) {
-  grpc::ClientContext context;
-  v1::ListJobsResponse list;
-  EXPECT_TRUE(stub.ListJobs(&context, {}, &list).ok());
-  return {list.jobs().begin(), list.jobs().end()};
-}
-
 // A finite job of a few hundred milliseconds: long enough that 16 clients at once overrun 2
 // workers and 4 queue slots.
 v1::SmoothingParameters FiniteParameters() {
@@ -69,7 +62,9 @@ TEST(OverloadTest, ManyClientsOverrunningTheQueueLoseAndDuplicateNoJob) {
   options.workers = 2;
   options.max_queued_jobs = 4;
   options.progress_interval = absl::Milliseconds(20);
-  options.result_ttl = absl::Milliseconds(300);
+  // Long enough that a client thread descheduled between the final event and GetResult on a
+  // loaded machine still finds its result; short enough to watch the registry forget.
+  options.result_ttl = absl::Seconds(2);
   TestServer test = StartTestServer(options);
   const v1::Mesh wire = ToWire(TetBlock(6, 0.3));
   const auto requests = SmoothRequests(wire, FiniteParameters());
@@ -142,7 +137,7 @@ TEST(OverloadTest, ManyClientsOverrunningTheQueueLoseAndDuplicateNoJob) {
 
   // The registry knows exactly the completed jobs, all final, and nothing is queued.
   std::set<std::string> listed;
-  for (const v1::Job& job : ListJobs(*test.stub)) {
+  for (const v1::Job& job : ListedJobs(*test.stub)) {
     EXPECT_EQ(job.state(), v1::JOB_STATE_SUCCEEDED) << job.DebugString();
     listed.insert(job.job_id());
   }
@@ -150,8 +145,9 @@ TEST(OverloadTest, ManyClientsOverrunningTheQueueLoseAndDuplicateNoJob) {
   // the test's TTL is short), and then the registry empties.
   EXPECT_TRUE(std::includes(unique.begin(), unique.end(), listed.begin(), listed.end()));
   bool empty = false;
-  for (int attempt = 0; attempt < 250 && !empty; ++attempt) {
-    empty = ListJobs(*test.stub).empty();
+  const absl::Time deadline = absl::Now() + 2 * options.result_ttl + absl::Seconds(20);
+  while (!empty && absl::Now() < deadline) {
+    empty = ListedJobs(*test.stub).empty();
     if (!empty) absl::SleepFor(absl::Milliseconds(20));
   }
   EXPECT_TRUE(empty) << "finished jobs are forgotten after twice --result_ttl";
@@ -192,7 +188,7 @@ TEST(OverloadTest, ClientVanishingMidUploadLeavesNoJobAndNoStreamBehind) {
     }
     EXPECT_EQ(status.error_code(), grpc::StatusCode::CANCELLED) << status.error_message();
   }
-  EXPECT_EQ(ListJobs(*test.stub).size(), 0u);
+  EXPECT_EQ(ListedJobs(*test.stub).size(), 0u);
   // The server frees a stream when its handler sees the cancel: poll, then a whole job runs.
   SmoothOutcome after;
   for (int attempt = 0; attempt < 100; ++attempt) {
@@ -202,7 +198,7 @@ TEST(OverloadTest, ClientVanishingMidUploadLeavesNoJobAndNoStreamBehind) {
   }
   ASSERT_TRUE(after.status.ok()) << after.status.error_message();
   ExpectValidResult(wire, after.result, after.mesh);
-  EXPECT_EQ(ListJobs(*test.stub).size(), 1u);
+  EXPECT_EQ(ListedJobs(*test.stub).size(), 1u);
 }
 
 TEST(OverloadTest, ClientVanishingMidDownloadLeavesTheResultFetchable) {
@@ -288,9 +284,13 @@ TEST(OverloadTest, WatcherThatNeverReadsHoldsUpNeitherTheJobNorOtherWatchers) {
   for (std::size_t i = 1; i < events.size(); ++i) {
     EXPECT_GT(events[i].sequence(), events[i - 1].sequence());
   }
-  // The reading watcher got nearly every event (a reader that falls behind by thousands loses
-  // its oldest intermediate ones, not phase ends): the stalled one slowed nobody down.
-  EXPECT_GE(events.size(), reference.events.size() * 9 / 10);
+  // The reading watcher got nearly every event published after it attached (a reader that falls
+  // behind by thousands loses its oldest intermediate ones, not phase ends): the stalled one
+  // slowed nobody down. Counted from its first event, not against the reference: the job starts
+  // as soon as it is submitted, and on a loaded machine the reader attaches some events later.
+  const std::uint64_t published = events.back().sequence() - events.front().sequence() + 1;
+  EXPECT_GE(published, 1000u) << "the reader attached too late to tell anything";
+  EXPECT_GE(events.size(), published * 9 / 10);
   auto phase_ends = [](const std::vector<v1::ProgressEvent>& list) {
     return std::count_if(list.begin(), list.end(), [](const auto& e) { return e.phase_done(); });
   };

@@ -257,6 +257,28 @@ v1::Job WaitForState(v1::Smoother::Stub& stub, const std::string& job_id, v1::Jo
   }
 }
 
+std::vector<v1::Job> ListedJobs(v1::Smoother::Stub& stub) {
+  grpc::ClientContext context;
+  v1::ListJobsResponse list;
+  EXPECT_TRUE(stub.ListJobs(&context, {}, &list).ok());
+  return {list.jobs().begin(), list.jobs().end()};
+}
+
+v1::Job WaitForProgress(v1::Smoother::Stub& stub, const std::string& job_id,
+                        absl::Duration timeout) {
+  const absl::Time deadline = absl::Now() + timeout;
+  while (true) {
+    v1::Job job = GetJob(stub, job_id);
+    if (job.latest_progress().iteration() > 0 || job.state() >= v1::JOB_STATE_SUCCEEDED ||
+        absl::Now() > deadline) {
+      EXPECT_EQ(job.state(), v1::JOB_STATE_RUNNING) << job.DebugString();
+      EXPECT_GT(job.latest_progress().iteration(), 0) << job.DebugString();
+      return job;
+    }
+    absl::SleepFor(absl::Milliseconds(5));
+  }
+}
+
 Mesh SmallHybridMesh() {
   auto mesh = meshgen::HybridBlock(4, 4, 4, 0.3, 7);
   EXPECT_TRUE(mesh.ok()) << mesh.status();

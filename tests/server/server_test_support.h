@@ -54,9 +54,15 @@ SmoothOutcome CallGetResult(v1::Smoother::Stub& stub, const std::string& job_id)
 absl::StatusOr<v1::Job> Submit(v1::Smoother::Stub& stub,
                                const std::vector<v1::SmoothRequest>& requests);
 v1::Job GetJob(v1::Smoother::Stub& stub, const std::string& job_id);
+// The jobs ListJobs returns; fails the test if the call fails.
+std::vector<v1::Job> ListedJobs(v1::Smoother::Stub& stub);
 // Polls GetJob until the job reaches `state` or a final state; fails the test after `timeout`.
 v1::Job WaitForState(v1::Smoother::Stub& stub, const std::string& job_id, v1::JobState state,
                      absl::Duration timeout = absl::Seconds(60));
+// Polls GetJob until the running job has published a progress event past iteration 0: a fixed
+// sleep is no promise of that on a loaded machine. Fails the test after `timeout`.
+v1::Job WaitForProgress(v1::Smoother::Stub& stub, const std::string& job_id,
+                        absl::Duration timeout = absl::Seconds(60));
 
 // Test meshes from the bench generators.
 Mesh SmallHybridMesh();                   // all four types, a few hundred elements
