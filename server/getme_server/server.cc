@@ -221,7 +221,11 @@ class SmootherServerImpl final : public SmootherServer {
     // gRPC keeps taking calls while jobs run out their grace: new jobs are refused with
     // UNAVAILABLE by the handlers (a call arriving during gRPC's own shutdown would be
     // CANCELLED instead), and clients can still watch and fetch their jobs.
-    const bool finished = registry_.WaitUntilNoneRunning(jobs_deadline);
+    bool finished = registry_.WaitUntilNoneRunning(jobs_deadline);
+    // With a store, a job taken just before the drain may not be in the registry yet (its mesh
+    // is still being rebuilt): the workers know it, and it gets the same grace.
+    if (store_ != nullptr)
+      finished = store_workers_->WaitUntilNoneRunning(jobs_deadline) && finished;
     if (store_ != nullptr) {
       if (!finished) {
         spdlog::warn("grace period over: handing the jobs still running back to the job store");

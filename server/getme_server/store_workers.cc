@@ -60,7 +60,33 @@ StoreWorkers::~StoreWorkers() {
   Join();
 }
 
-void StoreWorkers::StopTaking() { taking_.store(false); }
+void StoreWorkers::StopTaking() {
+  std::lock_guard lock(mutex_);
+  taking_.store(false);
+}
+
+bool StoreWorkers::WaitUntilNoneRunning(absl::Time deadline) {
+  std::unique_lock lock(mutex_);
+  return none_running_.wait_until(lock, absl::ToChronoTime(deadline),
+                                  [this] { return running_.empty(); });
+}
+
+std::shared_ptr<StoreWorkers::Running> StoreWorkers::Register(const TakenJob& taken) {
+  std::lock_guard lock(mutex_);
+  if (!taking_.load()) return nullptr;
+  auto running = std::make_shared<Running>();
+  running->id = taken.id;
+  running_[taken.id] = running;
+  return running;
+}
+
+void StoreWorkers::Unregister(const std::string& id) {
+  {
+    std::lock_guard lock(mutex_);
+    running_.erase(id);
+  }
+  none_running_.notify_all();
+}
 
 void StoreWorkers::Join() {
   for (std::thread& worker : workers_) {
@@ -91,7 +117,14 @@ void StoreWorkers::ReleaseRunning(absl::string_view reason) {
       spdlog::warn("job={} could not release its lease: {}", running->id, s.ToString());
     }
     spdlog::info("job={} handed back to the job store: {}", running->id, std::string(reason));
-    if (running->job != nullptr) running->job->Cancel(reason);
+    // Read after `lost` was set: a job whose mesh is still being rebuilt is not there yet, and
+    // RunTaken, which checks `lost` after it sets the job, cancels it itself.
+    std::shared_ptr<Job> job;
+    {
+      std::lock_guard lock(mutex_);
+      job = running->job;
+    }
+    if (job != nullptr) job->Cancel(reason);
   }
 }
 
@@ -104,12 +137,13 @@ void StoreWorkers::WorkLoop() {
       continue;
     }
     if (!taken->has_value()) continue;
-    if (!taking_.load()) {
+    std::shared_ptr<Running> running = Register(**taken);
+    if (running == nullptr) {
       // Taken just as this replica began to drain: give it straight back.
       (void)store_.ReleaseLease((*taken)->id);
       break;
     }
-    RunTaken(**std::move(taken));
+    RunTaken(**std::move(taken), std::move(running));
     ReleaseFreedHeapMemory();
   }
 }
@@ -158,16 +192,11 @@ void StoreWorkers::Flush(Running& running) {
   }
 }
 
-void StoreWorkers::RunTaken(TakenJob taken) {
+// `running` was registered (Register) before the mesh is rebuilt: the keeper renews its lease
+// meanwhile, so a large upload does not outlast it, and a drain waits for it.
+void StoreWorkers::RunTaken(TakenJob taken, std::shared_ptr<Running> running) {
   spdlog::info("job={} phase=taken attempt={} replica={}", taken.id, taken.attempt,
                store_.replica());
-  auto running = std::make_shared<Running>();
-  running->id = taken.id;
-  {
-    // Registered before the mesh is rebuilt: a large upload must not outlast its lease.
-    std::lock_guard lock(mutex_);
-    running_[taken.id] = running;
-  }
   absl::StatusOr<wire::UploadedMesh> mesh = RebuildMesh(taken.upload, options_.max_elements);
   absl::StatusOr<SmoothingParams> params =
       mesh.ok() ? CheckJobRequest(taken.header, options_) : mesh.status();
@@ -188,8 +217,7 @@ void StoreWorkers::RunTaken(TakenJob taken) {
     spdlog::error("job={} phase=done outcome=FAILED error={}", taken.id,
                   std::string(why.message()));
     (void)store_.Finish(taken.id, taken.attempt, describe, std::nullopt, {}, final_event);
-    std::lock_guard lock(mutex_);
-    running_.erase(taken.id);
+    Unregister(taken.id);
     return;
   }
 
@@ -237,10 +265,7 @@ void StoreWorkers::RunTaken(TakenJob taken) {
   }
 
   Flush(*running);
-  {
-    std::lock_guard lock(mutex_);
-    running_.erase(taken.id);
-  }
+  Unregister(taken.id);
   bool lost = false;
   std::optional<v1::ProgressEvent> final_event;
   {

@@ -35,8 +35,12 @@ class StoreWorkers {
   StoreWorkers(const StoreWorkers&) = delete;
   StoreWorkers& operator=(const StoreWorkers&) = delete;
 
-  // Takes no new job (a drain); jobs running here go on.
+  // Takes no new job (a drain); jobs running here go on. A job a worker took before this returns
+  // is already registered as running here, so WaitUntilNoneRunning waits for it.
   void StopTaking();
+  // Waits until no job taken here is running (each counts from the moment it was taken, while its
+  // mesh is still being rebuilt, to the moment it ended), or `deadline`; true if none is.
+  bool WaitUntilNoneRunning(absl::Time deadline);
   // Gives the jobs still running here back to the store (their lease ends now, so another
   // replica restarts them) and stops them here.
   void ReleaseRunning(absl::string_view reason);
@@ -62,7 +66,11 @@ class StoreWorkers {
 
   void WorkLoop();
   void KeeperLoop();
-  void RunTaken(TakenJob taken);
+  // The taken job's entry in running_, or null if this replica stopped taking (then the caller
+  // gives it back): checked and registered under one lock, so no job slips past a drain.
+  std::shared_ptr<Running> Register(const TakenJob& taken);
+  void RunTaken(TakenJob taken, std::shared_ptr<Running> running);
+  void Unregister(const std::string& id);
   void Flush(Running& running);
   v1::Job DescribeForStore(const Job& job, const Running& running) const;
   std::vector<std::shared_ptr<Running>> RunningNow() const;
@@ -75,10 +83,11 @@ class StoreWorkers {
 
   mutable std::mutex mutex_;
   absl::flat_hash_map<std::string, std::shared_ptr<Running>> running_;
+  std::condition_variable none_running_;  // notified when running_ shrinks
   std::condition_variable keeper_wake_;
   bool keeper_stop_ = false;
 
-  std::atomic<bool> taking_{true};
+  std::atomic<bool> taking_{true};  // written under mutex_ (Register reads it there)
   std::vector<std::thread> workers_;
   std::thread keeper_;
 };

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/time/clock.h"
@@ -456,6 +457,40 @@ TEST_F(ReplicasTest, AJobIsVisibleOnlyToItsOwnerOnEveryReplica) {
   // No token at all: refused by every replica.
   remote::SmootherClient anonymous(remote::SmootherClient::CreateChannel(replicas_[1].address));
   EXPECT_EQ(anonymous.ListJobs().status().code(), absl::StatusCode::kUnauthenticated);
+}
+
+// A job taken just before SIGTERM is not in the replica's job registry until its mesh is rebuilt
+// from the stored upload. The drain once waited only for the registry: such a job then started
+// after the drain had decided nothing was running, ran on without its grace period, and the
+// process never exited.
+TEST_F(ReplicasTest, SigtermWhileATakenJobsMeshIsRebuiltHandsItBackWithinTheGrace) {
+  StartReplicas(1, {"--workers=1", "--shutdown_grace=200ms"});
+  // A large upload, so that rebuilding its mesh leaves time for the signal to land between the
+  // take and the start.
+  const v1::Mesh mesh = ToWire(TetBlock(40, 0.3));
+  remote::SmoothJobOptions forever;
+  forever.parameters = LongRunningParameters();
+  absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, forever);
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  const std::string& log_path = replicas_[0].process.log_path;
+  const std::string taken = absl::StrCat("job=", submitted->job_id(), " phase=taken attempt=1 ");
+  const absl::Time deadline = absl::Now() + absl::Seconds(60);
+  while (ReadFile(log_path).find(taken) == std::string::npos && absl::Now() < deadline) {
+    absl::SleepFor(absl::Microseconds(500));
+  }
+  ASSERT_NE(ReadFile(log_path).find(taken), std::string::npos) << ReadFile(log_path);
+  ASSERT_EQ(kill(replicas_[0].process.pid, SIGTERM), 0);
+  const bool started_first = absl::StrContains(
+      ReadFile(log_path), absl::StrCat("job=", submitted->job_id(), " phase=start "));
+  EXPECT_EQ(WaitForExit(replicas_[0].process.pid, absl::Seconds(60)), 0) << ReadFile(log_path);
+  if (started_first) std::printf("the job had started before the signal: the race was not hit\n");
+
+  // Handed back: the next replica runs it again.
+  StartReplicas(1, {"--workers=1"});
+  EXPECT_EQ(RunnerOf(submitted->job_id(), 2), 1);
+  ASSERT_TRUE(replicas_[1].client->CancelJob(submitted->job_id()).ok());
+  ASSERT_TRUE(replicas_[1].client->WatchJob(submitted->job_id(), {}).ok());
+  ExpectStoreIdle();
 }
 
 TEST_F(ReplicasTest, SigtermLeavesQueuedJobsInTheStoreAndHandsRunningOnesToTheOthers) {
