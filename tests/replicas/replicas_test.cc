@@ -370,7 +370,9 @@ TEST_F(ReplicasTest, SixteenClientsAgainstAClusterQueueLimitLoseAndDuplicateNoth
     }
   }
   EXPECT_GT(refused, 0) << "the limit of 2 queued jobs never bit";
-  EXPECT_GE(ids.size(), 3u);
+  // The two queue slots always take the first two; more get in only if a replica takes a job
+  // before the others have been refused, which all 16 arriving at once may not leave time for.
+  EXPECT_GE(ids.size(), 2u);
   // Every accepted job ends SUCCEEDED with its result, fetched from another replica.
   for (const std::string& id : ids) {
     ASSERT_TRUE(replicas_[1].client->WatchJob(id, {}).ok());
