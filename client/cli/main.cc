@@ -18,6 +18,7 @@
 #include "cli/cli_options.h"
 #include "cli/convert_command.h"
 #include "cli/failure.h"
+#include "cli/one_run_allocator.h"
 #include "cli/quality_command.h"
 #include "cli/report_command.h"
 #include "cli/smooth_command.h"
@@ -81,6 +82,7 @@ int RunWithTheService(char** argv, bool json) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  getme::cli::PrepareAllocatorForOneRun();
   std::vector<std::string> args(argv + 1, argv + argc);
   // A usage error is reported as JSON too when --json was asked for anywhere.
   const bool json = Contains(args, "--json");

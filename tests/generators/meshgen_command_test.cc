@@ -120,6 +120,16 @@ TEST(MeshgenCommandTest, ErrorsNameTheOffendingArgument) {
   EXPECT_NE(message({"hex"}).find("KIND and OUT.vtk"), std::string::npos);
 }
 
+TEST(MeshgenCommandTest, RefusesAnOutputNameOfAnotherFormat) {
+  // It writes legacy VTK only: h.vtu would hold VTK text that the VTU reader refuses.
+  const absl::StatusOr<MeshgenCommand> vtu = Parse({"hybrid", "h.vtu", "--size", "3"});
+  ASSERT_FALSE(vtu.ok());
+  EXPECT_EQ(vtu.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(vtu.status().message().find("'h.vtu'"), std::string::npos) << vtu.status();
+  EXPECT_FALSE(Parse({"tet", "t.msh"}).ok());
+  EXPECT_TRUE(Parse({"tet", "T.VTK"}).ok());
+}
+
 TEST(MeshgenCommandTest, GeneratesTheRequestedBlock) {
   absl::StatusOr<MeshgenCommand> command = Parse({"tet", "t.vtk", "--size", "2,3,4"});
   ASSERT_TRUE(command.ok()) << command.status();

@@ -3,6 +3,7 @@
 #include <utility>
 #include <vector>
 
+#include "absl/strings/match.h"
 #include "absl/strings/numbers.h"
 #include "absl/strings/str_cat.h"
 #include "absl/strings/str_split.h"
@@ -168,6 +169,13 @@ absl::StatusOr<MeshgenCommand> ParseMeshgenCommand(std::span<const std::string> 
   if (!kind.ok()) return kind.status();
   command.kind = *kind;
   command.output_path = positional[1];
+  // The generator writes legacy VTK only; a name that promises another format (OUT.vtu) would
+  // hold VTK text that every reader of that format then refuses.
+  if (!absl::EndsWithIgnoreCase(command.output_path, ".vtk")) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("OUT must be a legacy VTK file ending in .vtk (got '", command.output_path,
+                     "'); write other formats with 'getme convert OUT.vtk OTHER'"));
+  }
   command.vessel.seed = command.seed;
   command.artery.seed = command.seed;
   const bool sized_kind = command.kind == MeshKind::kPlate || command.kind == MeshKind::kRing ||
