@@ -23,6 +23,12 @@ namespace {
 constexpr int kHistory = 8;
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxBacktracks = 30;
+// A line search starts at this many times the step the previous one accepted (at most the full
+// step). On the pinned arteries the full L-BFGS step inverts a thin-layer element in most
+// iterations, and the step taken is mostly 10⁻¹–10⁻⁸ of it, of a similar size from one iteration
+// to the next: started at the full step every time, four of five trial points inverted an element
+// and were only shrunk tenfold (docs/thin-layers.md, "The line search").
+constexpr double kStepMemory = 10.0;
 // A round ends after this many iterations without a new highest min q over the cluster: f can
 // keep falling by lifting elements above the minimum, which is not what the stage is for.
 constexpr int kPatience = 40;
@@ -74,7 +80,9 @@ class ClusterObjective {
         whole_exponent_(std::floor(exponent_) == exponent_ && exponent_ <= 64.0
                             ? static_cast<int>(exponent_)
                             : -1),
-        terms_(cluster.elements.size()) {}
+        terms_(cluster.elements.size()) {
+    context.NodeListsOf(cluster.elements, node_lists_);
+  }
 
   // f = Σ_{e∈B} (q_ref / q_e)^p at the mesh's coordinates, +∞ if an element of B is invalid;
   // the lowest q_e in `min_q`; with `gradient`, ∇f over V (3 entries per node, V's order).
@@ -107,11 +115,30 @@ class ClusterObjective {
   // terms(); returns the lowest quality, 0 if an element is invalid.
   double EvaluateElements(bool with_gradient) {
     const Mesh& mesh = context_.mesh;
-    context_.pool.ParallelFor(static_cast<std::int64_t>(cluster_.elements.size()),
-                              kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
-                                for (std::int64_t i = begin; i < end; ++i)
-                                  EvaluateElement(mesh, i, with_gradient);
-                              });
+    const std::int64_t count = static_cast<std::int64_t>(cluster_.elements.size());
+    if (with_gradient) {
+      context_.pool.ParallelFor(count, kClusterElementGrain,
+                                [&](std::int64_t begin, std::int64_t end) {
+                                  for (std::int64_t i = begin; i < end; ++i)
+                                    EvaluateElement(mesh, i, true);
+                                });
+    } else {
+      // The line search's trial points need qualities alone, and most of the stage's time is
+      // theirs: the list passes compute several elements of a type per vector instruction, with
+      // the same bits as one at a time.
+      qualities_.resize(cluster_.elements.size());
+      context_.pool.ParallelFor(
+          count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
+            const auto offset = static_cast<std::size_t>(begin);
+            const auto length = static_cast<std::size_t>(end - begin);
+            context_.QualitiesOf(
+                std::span<const ElementId>(cluster_.elements).subspan(offset, length),
+                std::span<const NodeId* const>(node_lists_).subspan(offset, length),
+                std::span<double>(qualities_).subspan(offset, length));
+            for (std::size_t i = offset; i < offset + length; ++i)
+              terms_[i].quality = qualities_[i];
+          });
+    }
     double min_q = std::numeric_limits<double>::infinity();
     for (const ElementTerm& term : terms_) {
       if (!(term.quality > 0.0)) return 0.0;
@@ -123,19 +150,34 @@ class ClusterObjective {
   // `qualities`, just their qualities into it (one per index) and terms() left as it was.
   void EvaluateSubset(std::span<const std::uint32_t> indices, std::vector<double>* qualities) {
     const Mesh& mesh = context_.mesh;
-    if (qualities != nullptr) qualities->resize(indices.size());
-    context_.pool.ParallelFor(static_cast<std::int64_t>(indices.size()), kClusterElementGrain,
-                              [&](std::int64_t begin, std::int64_t end) {
-                                for (std::int64_t j = begin; j < end; ++j) {
-                                  const std::size_t i = indices[static_cast<std::size_t>(j)];
-                                  if (qualities == nullptr) {
-                                    EvaluateElement(mesh, static_cast<std::int64_t>(i), true);
-                                  } else {
-                                    (*qualities)[static_cast<std::size_t>(j)] =
-                                        ElementQualityOrInvalid(mesh, cluster_.elements[i]);
-                                  }
-                                }
-                              });
+    const std::int64_t count = static_cast<std::int64_t>(indices.size());
+    if (qualities == nullptr) {
+      context_.pool.ParallelFor(
+          count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t j = begin; j < end; ++j) {
+              EvaluateElement(mesh, static_cast<std::int64_t>(indices[static_cast<std::size_t>(j)]),
+                              true);
+            }
+          });
+      return;
+    }
+    // As in EvaluateElements: the ascent's trial steps need qualities alone, by the list passes.
+    qualities->resize(indices.size());
+    subset_elements_.resize(indices.size());
+    subset_lists_.resize(indices.size());
+    for (std::size_t j = 0; j < indices.size(); ++j) {
+      subset_elements_[j] = cluster_.elements[indices[j]];
+      subset_lists_[j] = node_lists_[indices[j]];
+    }
+    context_.pool.ParallelFor(
+        count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
+          const auto offset = static_cast<std::size_t>(begin);
+          const auto length = static_cast<std::size_t>(end - begin);
+          context_.QualitiesOf(
+              std::span<const ElementId>(subset_elements_).subspan(offset, length),
+              std::span<const NodeId* const>(subset_lists_).subspan(offset, length),
+              std::span<double>(*qualities).subspan(offset, length));
+        });
   }
   const std::vector<ElementTerm>& terms() const { return terms_; }
 
@@ -166,6 +208,12 @@ class ClusterObjective {
   const double exponent_;
   const int whole_exponent_;
   std::vector<ElementTerm> terms_;
+  // node_lists_[i]: the node ids of B's element i, for the list passes.
+  std::vector<const NodeId*> node_lists_;
+  // Scratch of the list passes: qualities of all of B, and the subset EvaluateSubset was given.
+  std::vector<double> qualities_;
+  std::vector<ElementId> subset_elements_;
+  std::vector<const NodeId*> subset_lists_;
 };
 
 void ReadCoordinates(const Mesh& mesh, const Cluster& cluster, std::vector<double>& values) {
@@ -251,6 +299,8 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
   std::deque<std::vector<double>> y_history;
   std::deque<double> rho_history;
   std::vector<double> d(n), trial(n), g_new, alpha;
+  // The step the last line search accepted, as a share of its L-BFGS step.
+  double last_step = 1.0;
   for (int iteration = 1; iteration <= context.params.polish_cluster_iterations; ++iteration) {
     // d = −H g by the two-loop recursion.
     d = g;
@@ -293,7 +343,7 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
       rho_history.clear();
       continue;
     }
-    double step = 1.0;
+    double step = std::min(1.0, kStepMemory * last_step);
     double f_trial = std::numeric_limits<double>::infinity();
     bool accepted = false;
     for (int backtrack = 0; backtrack < kMaxBacktracks; ++backtrack) {
@@ -318,6 +368,7 @@ void Minimise(SmoothingContext& context, const Cluster& cluster,
       step = next;
     }
     if (!accepted) break;
+    last_step = step;
     if (min_q > best_min_q) {
       best_min_q = min_q;
       best_x = trial;
