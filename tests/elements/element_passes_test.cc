@@ -16,6 +16,7 @@
 #include "element_type_tags.h"
 #include "getme/elements/element_quality.h"
 #include "getme/elements/mean_ratio_derivatives.h"
+#include "getme/elements/mean_ratio_gradient.h"
 #include "getme/elements/transform.h"
 #include "getme/smoothing/element_passes_dispatch.h"
 #include "random_elements.h"
@@ -231,6 +232,49 @@ TYPED_TEST(ElementPassesTest, HessianListPassGivesTheOneElementBitsAtEveryWidth)
         }
         if (lanes == 2 && count == n && !std::isfinite(expected.cost)) ++invalid;
       }
+    }
+  }
+  EXPECT_GT(invalid, 10);
+}
+
+// The worst-cluster stage evaluates its elements' mean ratios and gradients through the gradient
+// list pass: every lane must get the one-element MeanRatioWithGradient's bits for every node
+// (mean_ratio_gradient.h), invalid elements included (kInvalidQuality, zero gradient), at every
+// width, and nothing past the list may be written.
+TYPED_TEST(ElementPassesTest, MeanRatioGradientListPassGivesTheOneElementBitsAtEveryWidth) {
+  constexpr ElementType kType = TypeParam::kType;
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  const TestBlock<kType> block = MakeBlock<kType>();
+  const auto n = static_cast<std::int64_t>(block.elements.size());
+  const auto [entries, node_lists] = ScatterList<kType>(block, 31, n);
+  int invalid = 0;
+  for (int lanes : SupportedLaneWidths()) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
+    ASSERT_TRUE(passes.ok()) << passes.status();
+    for (const std::int64_t count :
+         {std::int64_t{1}, std::int64_t{3}, std::int64_t{6}, std::int64_t{13}, n}) {
+      MeanRatioAndGradient untouched;
+      untouched.quality = std::numeric_limits<double>::quiet_NaN();
+      untouched.gradient.fill(Vec3::Zero());
+      std::vector<MeanRatioAndGradient> got(count + 1, untouched);
+      (*passes)->mean_ratio_gradient_list[TypeIndex(kType)](
+          {block.x, block.y, block.z, node_lists.data(), count}, got.data());
+      for (std::int64_t i = 0; i < count; ++i) {
+        SCOPED_TRACE(::testing::Message() << "list entry " << i);
+        const MeanRatioGradientResult<kType> expected =
+            MeanRatioWithGradient<kType>(block.elements[entries[i]]);
+        EXPECT_EQ(Bits(got[i].quality), Bits(expected.quality))
+            << got[i].quality << " vs " << expected.quality;
+        for (int k = 0; k < kNodes; ++k) {
+          for (int c = 0; c < 3; ++c) {
+            EXPECT_EQ(Bits(got[i].gradient[k][c]), Bits(expected.gradient[k][c]))
+                << "node " << k << ", coordinate " << c;
+          }
+        }
+        if (lanes == 2 && count == n && expected.quality == kInvalidQuality) ++invalid;
+      }
+      EXPECT_TRUE(std::isnan(got[count].quality)) << "the slot past " << count << " was written";
     }
   }
   EXPECT_GT(invalid, 10);

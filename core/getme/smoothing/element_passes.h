@@ -23,6 +23,7 @@
 #include "getme/elements/element_quality.h"
 #include "getme/elements/lanes.h"
 #include "getme/elements/mean_ratio_derivatives.h"
+#include "getme/elements/mean_ratio_gradient.h"
 #include "getme/elements/transform.h"
 #include "getme/elements/vec3.h"
 
@@ -142,6 +143,33 @@ void HessianListPass(const ElementList& list, const int* node,
       out.cost = r.cost[l];
       out.gradient = {r.gradient.x[l], r.gradient.y[l], r.gradient.z[l]};
       for (int k = 0; k < 6; ++k) out.hessian[k] = r.hessian[k][l];
+    }
+  }
+}
+
+// One element's mean ratio and its gradient over the element's nodes (MeanRatioWithGradientOf,
+// mean_ratio_gradient.h): the worst-cluster stage's term of an element.
+struct MeanRatioAndGradient {
+  double quality = kInvalidQuality;             // unclamped; kInvalidQuality if invalid
+  std::array<Vec3, kMaxElementNodes> gradient;  // ∂q/∂p of node k, k < the element's node count
+};
+
+// out[i] = the mean ratio and gradient of the list's element i.
+template <ElementType kType, int kWidth>
+void MeanRatioGradientListPass(const ElementList& list, MeanRatioAndGradient* out) {
+  for (std::int64_t i = 0; i < list.count; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
+    const NodeId* lane_nodes[kWidth];
+    for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
+    const MeanRatioGradientOf<kType, LanesOf<kWidth>> r =
+        MeanRatioWithGradientOf<kType, LanesOf<kWidth>>(
+            GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+    for (int l = 0; l < count; ++l) {
+      MeanRatioAndGradient& element = out[i + l];
+      element.quality = r.quality[l];
+      for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
+        element.gradient[k] = Vec3(r.gradient[k].x[l], r.gradient[k].y[l], r.gradient[k].z[l]);
+      }
     }
   }
 }

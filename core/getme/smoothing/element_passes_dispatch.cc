@@ -71,6 +71,11 @@ template <ElementType kType>
   HessianListPass<kType, kListLanes>(list, node, derivatives);
 }
 
+template <ElementType kType>
+[[gnu::flatten]] void MeanRatioGradientOfList(const ElementList& list, MeanRatioAndGradient* out) {
+  MeanRatioGradientListPass<kType, kListLanes>(list, out);
+}
+
 extern const ElementPasses kTargetPasses;
 const ElementPasses kTargetPasses = {
     kTargetLanes,
@@ -87,6 +92,10 @@ const ElementPasses kTargetPasses = {
      &CostAndQualityOfList<ElementType::kPrism>},
     {&HessianOfList<ElementType::kTetrahedron>, &HessianOfList<ElementType::kHexahedron>,
      &HessianOfList<ElementType::kPyramid>, &HessianOfList<ElementType::kPrism>},
+    {&MeanRatioGradientOfList<ElementType::kTetrahedron>,
+     &MeanRatioGradientOfList<ElementType::kHexahedron>,
+     &MeanRatioGradientOfList<ElementType::kPyramid>,
+     &MeanRatioGradientOfList<ElementType::kPrism>},
 };
 
 }  // namespace HWY_NAMESPACE
@@ -122,6 +131,10 @@ const ElementPasses kReferencePasses = {
      &HessianListPass<ElementType::kHexahedron, kLanes>,
      &HessianListPass<ElementType::kPyramid, kLanes>,
      &HessianListPass<ElementType::kPrism, kLanes>},
+    {&MeanRatioGradientListPass<ElementType::kTetrahedron, kLanes>,
+     &MeanRatioGradientListPass<ElementType::kHexahedron, kLanes>,
+     &MeanRatioGradientListPass<ElementType::kPyramid, kLanes>,
+     &MeanRatioGradientListPass<ElementType::kPrism, kLanes>},
 };
 
 // Widest first.

@@ -29,6 +29,8 @@ struct ElementPasses {
                       InverseMeanRatioHessianOf<double>* derivatives),
              kElementTypeCount>
       hessian_list{};
+  std::array<void (*)(const ElementList&, MeanRatioAndGradient* out), kElementTypeCount>
+      mean_ratio_gradient_list{};
 };
 
 // The passes of `lanes` lanes (2, 4 or 8), or with lanes = 0 the widest this machine runs.

@@ -10,9 +10,10 @@
 #include <utility>
 #include <vector>
 
-#include "getme/elements/mean_ratio_gradient.h"
 #include "getme/elements/vec3.h"
 #include "getme/mesh/node_neighbours.h"
+#include "getme/mesh/type_runs.h"
+#include "getme/smoothing/element_passes.h"
 #include "getme/smoothing/min_norm_point.h"
 #include "getme/smoothing/whole_power.h"
 
@@ -57,11 +58,21 @@ struct Cluster {
 };
 
 // Per element of B, what one evaluation computed: written in parallel, summed in B's order, so
-// the sums have the same bits for every thread count.
-struct ElementTerm {
-  double quality = 0.0;                         // kInvalidQuality if invalid
-  std::array<Vec3, kMaxElementNodes> gradient;  // ∂q/∂p for the element's nodes in V
-};
+// the sums have the same bits for every thread count. Of the gradient, only the element's nodes in
+// V are read.
+using ElementTerm = MeanRatioAndGradient;
+
+// out[i] = the mean ratio and gradient of elements[i], whose node ids are node_lists[i], by the
+// list passes within each run of one type.
+void MeanRatiosAndGradientsOf(const SmoothingContext& context, std::span<const ElementId> elements,
+                              std::span<const NodeId* const> node_lists,
+                              std::span<ElementTerm> out) {
+  const Mesh& mesh = context.mesh;
+  ForEachTypeRun(mesh, elements, [&](ElementType type, std::int64_t begin, std::int64_t end) {
+    context.passes.mean_ratio_gradient_list[TypeIndex(type)](
+        {mesh.x(), mesh.y(), mesh.z(), node_lists.data() + begin, end - begin}, out.data() + begin);
+  });
+}
 
 // (q_ref / q)^p: by repeated squaring for a whole exponent (the default 20), else std::pow.
 double Term(double ratio, double exponent, int whole_exponent) {
@@ -114,31 +125,27 @@ class ClusterObjective {
   // Every element of B's quality and, with_gradient, its gradient over its nodes in V, into
   // terms(); returns the lowest quality, 0 if an element is invalid.
   double EvaluateElements(bool with_gradient) {
-    const Mesh& mesh = context_.mesh;
     const std::int64_t count = static_cast<std::int64_t>(cluster_.elements.size());
-    if (with_gradient) {
-      context_.pool.ParallelFor(count, kClusterElementGrain,
-                                [&](std::int64_t begin, std::int64_t end) {
-                                  for (std::int64_t i = begin; i < end; ++i)
-                                    EvaluateElement(mesh, i, true);
-                                });
-    } else {
-      // The line search's trial points need qualities alone, and most of the stage's time is
-      // theirs: the list passes compute several elements of a type per vector instruction, with
-      // the same bits as one at a time.
-      qualities_.resize(cluster_.elements.size());
-      context_.pool.ParallelFor(
-          count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
-            const auto offset = static_cast<std::size_t>(begin);
-            const auto length = static_cast<std::size_t>(end - begin);
-            context_.QualitiesOf(
-                std::span<const ElementId>(cluster_.elements).subspan(offset, length),
-                std::span<const NodeId* const>(node_lists_).subspan(offset, length),
-                std::span<double>(qualities_).subspan(offset, length));
-            for (std::size_t i = offset; i < offset + length; ++i)
-              terms_[i].quality = qualities_[i];
-          });
-    }
+    // Both evaluations go through the list passes: several elements of a type per vector
+    // instruction, with the same bits as one at a time. The line search's trial points need
+    // qualities alone, and are most of the stage's evaluations.
+    if (!with_gradient) qualities_.resize(cluster_.elements.size());
+    context_.pool.ParallelFor(
+        count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
+          const auto offset = static_cast<std::size_t>(begin);
+          const auto length = static_cast<std::size_t>(end - begin);
+          const auto elements =
+              std::span<const ElementId>(cluster_.elements).subspan(offset, length);
+          const auto lists = std::span<const NodeId* const>(node_lists_).subspan(offset, length);
+          if (with_gradient) {
+            MeanRatiosAndGradientsOf(context_, elements, lists,
+                                     std::span<ElementTerm>(terms_).subspan(offset, length));
+            return;
+          }
+          context_.QualitiesOf(elements, lists,
+                               std::span<double>(qualities_).subspan(offset, length));
+          for (std::size_t i = offset; i < offset + length; ++i) terms_[i].quality = qualities_[i];
+        });
     double min_q = std::numeric_limits<double>::infinity();
     for (const ElementTerm& term : terms_) {
       if (!(term.quality > 0.0)) return 0.0;
@@ -149,58 +156,40 @@ class ClusterObjective {
   // Only the elements of B at `indices` (positions in B): their terms with gradients, or, with
   // `qualities`, just their qualities into it (one per index) and terms() left as it was.
   void EvaluateSubset(std::span<const std::uint32_t> indices, std::vector<double>* qualities) {
-    const Mesh& mesh = context_.mesh;
     const std::int64_t count = static_cast<std::int64_t>(indices.size());
-    if (qualities == nullptr) {
-      context_.pool.ParallelFor(
-          count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t j = begin; j < end; ++j) {
-              EvaluateElement(mesh, static_cast<std::int64_t>(indices[static_cast<std::size_t>(j)]),
-                              true);
-            }
-          });
-      return;
-    }
-    // As in EvaluateElements: the ascent's trial steps need qualities alone, by the list passes.
-    qualities->resize(indices.size());
     subset_elements_.resize(indices.size());
     subset_lists_.resize(indices.size());
     for (std::size_t j = 0; j < indices.size(); ++j) {
       subset_elements_[j] = cluster_.elements[indices[j]];
       subset_lists_[j] = node_lists_[indices[j]];
     }
+    if (qualities != nullptr) {
+      qualities->resize(indices.size());
+    } else {
+      subset_terms_.resize(indices.size());
+    }
     context_.pool.ParallelFor(
         count, kClusterElementGrain, [&](std::int64_t begin, std::int64_t end) {
           const auto offset = static_cast<std::size_t>(begin);
           const auto length = static_cast<std::size_t>(end - begin);
-          context_.QualitiesOf(
-              std::span<const ElementId>(subset_elements_).subspan(offset, length),
-              std::span<const NodeId* const>(subset_lists_).subspan(offset, length),
-              std::span<double>(*qualities).subspan(offset, length));
+          const auto elements =
+              std::span<const ElementId>(subset_elements_).subspan(offset, length);
+          const auto lists = std::span<const NodeId* const>(subset_lists_).subspan(offset, length);
+          if (qualities != nullptr) {
+            context_.QualitiesOf(elements, lists,
+                                 std::span<double>(*qualities).subspan(offset, length));
+            return;
+          }
+          MeanRatiosAndGradientsOf(context_, elements, lists,
+                                   std::span<ElementTerm>(subset_terms_).subspan(offset, length));
+          for (std::size_t j = offset; j < offset + length; ++j) {
+            terms_[indices[j]] = subset_terms_[j];
+          }
         });
   }
   const std::vector<ElementTerm>& terms() const { return terms_; }
 
  private:
-  void EvaluateElement(const Mesh& mesh, std::int64_t i, bool with_gradient) {
-    const ElementId e = cluster_.elements[i];
-    const NodeId* ids = mesh.element_nodes(e).data();
-    DispatchElementType(mesh.type(e), [&]<ElementType kType>() {
-      const ElementNodes<kType> p = GatherNodes<kType>(mesh, ids);
-      if (!with_gradient) {
-        terms_[i].quality = MeanRatioOrInvalid<kType>(p);
-        return;
-      }
-      unsigned needed = 0;
-      for (int k = 0; k < ElementTable<kType>::kNodes; ++k) {
-        if (variable_of_[ids[k]] >= 0) needed |= 1u << k;
-      }
-      const MeanRatioGradientResult<kType> r = MeanRatioWithGradient<kType>(p, needed);
-      terms_[i].quality = r.quality;
-      std::copy(r.gradient.begin(), r.gradient.end(), terms_[i].gradient.begin());
-    });
-  }
-
   SmoothingContext& context_;
   const Cluster& cluster_;
   const std::vector<int>& variable_of_;
@@ -210,10 +199,12 @@ class ClusterObjective {
   std::vector<ElementTerm> terms_;
   // node_lists_[i]: the node ids of B's element i, for the list passes.
   std::vector<const NodeId*> node_lists_;
-  // Scratch of the list passes: qualities of all of B, and the subset EvaluateSubset was given.
+  // Scratch of the list passes: qualities of all of B, and the subset EvaluateSubset was given
+  // with its terms.
   std::vector<double> qualities_;
   std::vector<ElementId> subset_elements_;
   std::vector<const NodeId*> subset_lists_;
+  std::vector<ElementTerm> subset_terms_;
 };
 
 void ReadCoordinates(const Mesh& mesh, const Cluster& cluster, std::vector<double>& values) {
