@@ -148,8 +148,10 @@ struct SmoothingParams {
   // of at most polish_cluster_iterations iterations; the mean stage then runs again above the new
   // q_min. It runs only where q_min < polish_cluster_trigger × q_mean, i.e. where the worst
   // elements lag far behind the rest (pinned thin boundary layers: docs/thin-layers.md); 0 turns
-  // it off. Measured in docs/quality.md#polish. When the rounds stall, one last round takes up to
-  // polish_cluster_ascent_iterations steepest-ascent steps of the minimum itself (0: none).
+  // it off. Measured in docs/quality.md#polish. A stalled round is tried once more with twice the
+  // band; when that stalls too, a round takes up to polish_cluster_ascent_iterations
+  // steepest-ascent steps of the minimum itself (0: none, and the stage ends), and where that
+  // gains more than polish_cluster_tolerance the L-BFGS rounds go on from its end.
   double polish_cluster_trigger = 1.0 / 3.0;
   double polish_cluster_band = 0.25;
   double polish_cluster_exponent = 20.0;

@@ -46,6 +46,8 @@ constexpr double kActiveShare = 1e-4;
 constexpr double kMaxActiveShare = 0.03;
 constexpr std::size_t kMaxActive = 48;
 constexpr double kAscentFirstShare = 0.01;
+// A round that stalls is tried once more with the band above q_min this many times wider.
+constexpr double kWidenedBand = 2.0;
 // Elements per ParallelFor chunk of an evaluation: each costs a few hundred nanoseconds.
 constexpr std::int64_t kClusterElementGrain = 64;
 
@@ -569,13 +571,13 @@ void AscendMinimum(SmoothingContext& context, const Cluster& cluster,
   WriteCoordinates(mesh, cluster, x);
 }
 
-// The round's cluster: the elements within the band above q_min, their free nodes, and every
-// element around those nodes. Empty nodes if the worst element has no free node: then nothing
-// can lift q_min.
-Cluster FindCluster(const SmoothingContext& context, double q_min, std::vector<int>& variable_of,
-                    std::vector<std::uint8_t>& in_cluster) {
+// The round's cluster: the elements within the band above q_min (polish_cluster_band times
+// band_factor), their free nodes, and every element around those nodes. Empty nodes if the worst
+// element has no free node: then nothing can lift q_min.
+Cluster FindCluster(const SmoothingContext& context, double q_min, double band_factor,
+                    std::vector<int>& variable_of, std::vector<std::uint8_t>& in_cluster) {
   const Mesh& mesh = context.mesh;
-  const double limit = q_min * (1.0 + context.params.polish_cluster_band);
+  const double limit = q_min * (1.0 + band_factor * context.params.polish_cluster_band);
   Cluster cluster;
   for (ElementId e = 0; e < mesh.element_count(); ++e) {
     const double q = context.quality[e];
@@ -627,11 +629,16 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
   std::vector<std::uint8_t> in_cluster(mesh.element_count(), 0);
   std::vector<double> start;
   std::vector<double> start_quality;
-  // The rounds minimise the smooth stand-in until they stall; then one last round ascends the
-  // minimum itself (AscendMinimum) from where they stalled. Run from the start, the ascent
-  // settles on the first local max-min point, which on the arteries is lower than where the
-  // stand-in's rounds, each re-centred on the new worst elements, go on to (docs/thin-layers.md).
+  // The rounds minimise the smooth stand-in until they stall. A stalled round is tried once more
+  // with the band widened (kWidenedBand): the wider cluster can move what held the narrow one, and
+  // where it gains, the rounds go on. Then a round ascends the minimum itself (AscendMinimum) from
+  // where they stalled. Run from the start, the ascent settles on the first local max-min point,
+  // which on the arteries is lower than where the stand-in's rounds, each re-centred on the new
+  // worst elements, go on to (docs/thin-layers.md). Where the ascent gains, the stand-in's rounds
+  // start again from its end; the stage ends at an ascent that gains less than the tolerance, or
+  // after the last round, which is always an ascent.
   bool ascending = false;
+  bool widened = false;
   for (std::int64_t round = 1; round <= params.polish_cluster_max_rounds + 1; ++round) {
     if (context.Cancelled()) {
       return absl::CancelledError("smoothing cancelled during the polish's worst-cluster stage");
@@ -642,7 +649,8 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
     }
     const double q_start = current.q_min;
     if (!(q_start > 0.0)) break;
-    Cluster cluster = FindCluster(context, q_start, variable_of, in_cluster);
+    Cluster cluster =
+        FindCluster(context, q_start, widened ? kWidenedBand : 1.0, variable_of, in_cluster);
     if (cluster.nodes.empty()) break;
     ReadCoordinates(mesh, cluster, start);
     start_quality.resize(cluster.elements.size());
@@ -672,8 +680,19 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
       context.Report({Phase::kPolish, summary.iterations, current.q_min, current.q_mean,
                       current.invalid, 0, context.ElapsedSeconds(), false});
     }
-    if (ascending) break;
-    if (!kept || after.q_min < q_start * (1.0 + params.polish_cluster_tolerance)) {
+    const bool gained = kept && after.q_min >= q_start * (1.0 + params.polish_cluster_tolerance);
+    if (ascending) {
+      if (!gained || round > params.polish_cluster_max_rounds) break;
+      // The ascent left the plateau the stand-in's rounds had stalled on: they go on from there.
+      ascending = false;
+      continue;
+    }
+    if (!gained && !widened) {
+      widened = true;
+      continue;
+    }
+    widened = false;
+    if (!gained) {
       if (params.polish_cluster_ascent_iterations == 0) break;
       ascending = true;
     }
