@@ -3,14 +3,7 @@
 #include <cstdint>
 
 // Under a sanitizer its own allocator serves malloc, and glibc's counts say nothing of it.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define GETME_SANITIZER_ALLOCATOR 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define GETME_SANITIZER_ALLOCATOR 1
-#endif
+#include "getme_support/sanitizer_allocator.h"
 
 namespace getme::server {
 

@@ -14,20 +14,10 @@
 #include <sstream>
 #include <string>
 
+#include "getme_support/sanitizer_allocator.h"
+
 namespace getme::cli {
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitizerAllocator = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-constexpr bool kSanitizerAllocator = true;
-#else
-constexpr bool kSanitizerAllocator = false;
-#endif
-#else
-constexpr bool kSanitizerAllocator = false;
-#endif
 
 // Whether the mapping that holds `address` carries the huge-page advice: "hg" among the VmFlags
 // of its entry in /proc/self/smaps.
