@@ -94,6 +94,18 @@ ScatteredList ScatterList(const TestBlock<kType>& block, std::int64_t stride, st
   return list;
 }
 
+// Runs check(passes, lanes) with the passes of every width this machine runs, traced with the
+// width.
+template <typename Check>
+void ForEachWidth(const Check& check) {
+  for (int lanes : SupportedLaneWidths()) {
+    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
+    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
+    ASSERT_TRUE(passes.ok()) << passes.status();
+    check(**passes, lanes);
+  }
+}
+
 template <typename Tag>
 class ElementPassesTest : public ::testing::Test {};
 TYPED_TEST_SUITE(ElementPassesTest, AllElementTypes, ElementTypeName);
@@ -103,14 +115,11 @@ TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
   const TestBlock<kType> block = MakeBlock<kType>();
   const std::size_t n = block.elements.size();
   int invalid = 0;
-  for (int lanes : SupportedLaneWidths()) {
-    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
-    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
-    ASSERT_TRUE(passes.ok()) << passes.status();
-    ASSERT_EQ((*passes)->lanes, lanes);
+  ForEachWidth([&](const ElementPasses& passes, int lanes) {
+    ASSERT_EQ(passes.lanes, lanes);
     for (const auto& [begin, end] : kRanges) {
       std::vector<double> quality(n, std::numeric_limits<double>::quiet_NaN());
-      (*passes)->mean_ratio[TypeIndex(kType)](block.Range(begin, end), quality.data());
+      passes.mean_ratio[TypeIndex(kType)](block.Range(begin, end), quality.data());
       for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
         const double written = quality[block.IdOf(i)];
         if (i < begin || i >= end) {
@@ -124,7 +133,7 @@ TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
         if (lanes == 2 && begin == 0 && expected == kInvalidQuality) ++invalid;
       }
     }
-  }
+  });
   // The random elements include invalid ones, so the validity lanes were exercised too.
   EXPECT_GT(invalid, 10);
 }
@@ -137,15 +146,14 @@ TYPED_TEST(ElementPassesTest, MeanRatioListPassGivesTheOneElementBitsAtEveryWidt
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
   // Entries 0, 37, 74, ... modulo n: scattered, and every 413th repeats.
-  const auto [entries, node_lists] = ScatterList<kType>(block, 37, 2 * n);
+  const ScatteredList list = ScatterList<kType>(block, 37, 2 * n);
+  const std::vector<std::int64_t>& entries = list.entries;
+  const std::vector<const NodeId*>& node_lists = list.node_lists;
   int invalid = 0;
-  for (int lanes : SupportedLaneWidths()) {
-    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
-    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
-    ASSERT_TRUE(passes.ok()) << passes.status();
+  ForEachWidth([&](const ElementPasses& passes, int lanes) {
     for (const std::int64_t count : {1, 2, 3, 5, 8, 9, 17, 826}) {
       std::vector<double> quality(count + 1, std::numeric_limits<double>::quiet_NaN());
-      (*passes)->mean_ratio_list[TypeIndex(kType)](
+      passes.mean_ratio_list[TypeIndex(kType)](
           {block.x, block.y, block.z, node_lists.data(), count}, quality.data());
       for (std::int64_t i = 0; i < count; ++i) {
         const double expected = MeanRatioOrInvalid<kType>(block.elements[entries[i]]);
@@ -156,7 +164,7 @@ TYPED_TEST(ElementPassesTest, MeanRatioListPassGivesTheOneElementBitsAtEveryWidt
       }
       EXPECT_TRUE(std::isnan(quality[count])) << "the slot past " << count << " was written";
     }
-  }
+  });
   EXPECT_GT(invalid, 10);
 }
 
@@ -167,17 +175,16 @@ TYPED_TEST(ElementPassesTest, CostAndQualityListPassGivesTheOneElementBitsAtEver
   constexpr ElementType kType = TypeParam::kType;
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
-  const auto [entries, node_lists] = ScatterList<kType>(block, 53, n);
+  const ScatteredList list = ScatterList<kType>(block, 53, n);
+  const std::vector<std::int64_t>& entries = list.entries;
+  const std::vector<const NodeId*>& node_lists = list.node_lists;
   int invalid = 0;
-  for (int lanes : SupportedLaneWidths()) {
-    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
-    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
-    ASSERT_TRUE(passes.ok()) << passes.status();
+  ForEachWidth([&](const ElementPasses& passes, int lanes) {
     for (const std::int64_t count :
          {std::int64_t{1}, std::int64_t{3}, std::int64_t{7}, std::int64_t{9}, n}) {
       std::vector<double> cost(count + 1, std::numeric_limits<double>::quiet_NaN());
       std::vector<double> quality(count + 1, std::numeric_limits<double>::quiet_NaN());
-      (*passes)->cost_and_quality_list[TypeIndex(kType)](
+      passes.cost_and_quality_list[TypeIndex(kType)](
           {block.x, block.y, block.z, node_lists.data(), count}, cost.data(), quality.data());
       for (std::int64_t i = 0; i < count; ++i) {
         const InverseMeanRatioCostAndQuality expected =
@@ -191,7 +198,7 @@ TYPED_TEST(ElementPassesTest, CostAndQualityListPassGivesTheOneElementBitsAtEver
       EXPECT_TRUE(std::isnan(quality[count]) && std::isnan(cost[count]))
           << "the slot past " << count << " was written";
     }
-  }
+  });
   EXPECT_GT(invalid, 10);
 }
 
@@ -203,20 +210,19 @@ TYPED_TEST(ElementPassesTest, HessianListPassGivesTheOneElementBitsAtEveryWidth)
   constexpr int kNodes = ElementTable<kType>::kNodes;
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
-  const auto [entries, node_lists] = ScatterList<kType>(block, 29, n);
+  const ScatteredList list = ScatterList<kType>(block, 29, n);
+  const std::vector<std::int64_t>& entries = list.entries;
+  const std::vector<const NodeId*>& node_lists = list.node_lists;
   std::vector<int> local;  // every node, mixed within each vector
   for (std::int64_t k = 0; k < n; ++k)
     local.push_back(static_cast<int>((k * 7 + k / kNodes) % kNodes));
   int invalid = 0;
-  for (int lanes : SupportedLaneWidths()) {
-    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
-    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
-    ASSERT_TRUE(passes.ok()) << passes.status();
+  ForEachWidth([&](const ElementPasses& passes, int lanes) {
     for (const std::int64_t count :
          {std::int64_t{1}, std::int64_t{2}, std::int64_t{5}, std::int64_t{11}, n}) {
       std::vector<InverseMeanRatioHessianOf<double>> got(count);
-      (*passes)->hessian_list[TypeIndex(kType)](
-          {block.x, block.y, block.z, node_lists.data(), count}, local.data(), got.data());
+      passes.hessian_list[TypeIndex(kType)]({block.x, block.y, block.z, node_lists.data(), count},
+                                            local.data(), got.data());
       for (std::int64_t i = 0; i < count; ++i) {
         const InverseMeanRatioHessianResult expected =
             InverseMeanRatioHessian<kType>(block.elements[entries[i]], local[i]);
@@ -233,7 +239,7 @@ TYPED_TEST(ElementPassesTest, HessianListPassGivesTheOneElementBitsAtEveryWidth)
         if (lanes == 2 && count == n && !std::isfinite(expected.cost)) ++invalid;
       }
     }
-  }
+  });
   EXPECT_GT(invalid, 10);
 }
 
@@ -246,19 +252,18 @@ TYPED_TEST(ElementPassesTest, MeanRatioGradientListPassGivesTheOneElementBitsAtE
   constexpr int kNodes = ElementTable<kType>::kNodes;
   const TestBlock<kType> block = MakeBlock<kType>();
   const auto n = static_cast<std::int64_t>(block.elements.size());
-  const auto [entries, node_lists] = ScatterList<kType>(block, 31, n);
+  const ScatteredList list = ScatterList<kType>(block, 31, n);
+  const std::vector<std::int64_t>& entries = list.entries;
+  const std::vector<const NodeId*>& node_lists = list.node_lists;
   int invalid = 0;
-  for (int lanes : SupportedLaneWidths()) {
-    SCOPED_TRACE(::testing::Message() << lanes << " lanes");
-    const absl::StatusOr<const ElementPasses*> passes = ElementPassesFor(lanes);
-    ASSERT_TRUE(passes.ok()) << passes.status();
+  ForEachWidth([&](const ElementPasses& passes, int lanes) {
     for (const std::int64_t count :
          {std::int64_t{1}, std::int64_t{3}, std::int64_t{6}, std::int64_t{13}, n}) {
       MeanRatioAndGradient untouched;
       untouched.quality = std::numeric_limits<double>::quiet_NaN();
       untouched.gradient.fill(Vec3::Zero());
       std::vector<MeanRatioAndGradient> got(count + 1, untouched);
-      (*passes)->mean_ratio_gradient_list[TypeIndex(kType)](
+      passes.mean_ratio_gradient_list[TypeIndex(kType)](
           {block.x, block.y, block.z, node_lists.data(), count}, got.data());
       for (std::int64_t i = 0; i < count; ++i) {
         SCOPED_TRACE(::testing::Message() << "list entry " << i);
@@ -276,7 +281,7 @@ TYPED_TEST(ElementPassesTest, MeanRatioGradientListPassGivesTheOneElementBitsAtE
       }
       EXPECT_TRUE(std::isnan(got[count].quality)) << "the slot past " << count << " was written";
     }
-  }
+  });
   EXPECT_GT(invalid, 10);
 }
 

@@ -90,16 +90,24 @@ struct ElementList {
   std::int64_t count = 0;
 };
 
+// The nodes of the list's elements i, i + 1, … one per lane, kWidth of them: lanes past the list's
+// end repeat its last element, and their results are dropped.
+template <ElementType kType, int kWidth>
+GETME_LANE_INLINE LaneNodes<kType, LanesOf<kWidth>> GatherListLanes(const ElementList& list,
+                                                                    std::int64_t i) {
+  const std::int64_t last = list.count - 1;
+  const NodeId* lane_nodes[kWidth];
+  for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[std::min(i + l, last)];
+  return GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes);
+}
+
 // quality[i] = MeanRatioOrInvalid of the list's element i.
 template <ElementType kType, int kWidth>
 void MeanRatioListPass(const ElementList& list, double* quality) {
   for (std::int64_t i = 0; i < list.count; i += kWidth) {
     const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
-    // Lanes past `count` repeat the last element; their results are dropped.
-    const NodeId* lane_nodes[kWidth];
-    for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
-    const LanesOf<kWidth> q = MeanRatioOrInvalid<kType, LanesOf<kWidth>>(
-        GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+    const LanesOf<kWidth> q =
+        MeanRatioOrInvalid<kType, LanesOf<kWidth>>(GatherListLanes<kType, kWidth>(list, i));
     for (int l = 0; l < count; ++l) quality[i + l] = q[l];
   }
 }
@@ -110,11 +118,8 @@ template <ElementType kType, int kWidth>
 void CostAndQualityListPass(const ElementList& list, double* cost, double* quality) {
   for (std::int64_t i = 0; i < list.count; i += kWidth) {
     const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
-    const NodeId* lane_nodes[kWidth];
-    for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
     const InverseMeanRatioCostAndQualityOf<LanesOf<kWidth>> r =
-        CostAndQuality<kType, LanesOf<kWidth>>(
-            GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+        CostAndQuality<kType, LanesOf<kWidth>>(GatherListLanes<kType, kWidth>(list, i));
     for (int l = 0; l < count; ++l) {
       cost[i + l] = r.cost[l];
       quality[i + l] = r.quality[l];
@@ -129,15 +134,11 @@ void HessianListPass(const ElementList& list, const int* node,
                      InverseMeanRatioHessianOf<double>* derivatives) {
   for (std::int64_t i = 0; i < list.count; i += kWidth) {
     const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
-    const NodeId* lane_nodes[kWidth];
     LaneMaskOf<kWidth> lane_node{};
-    for (int l = 0; l < kWidth; ++l) {
-      lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
-      lane_node[l] = node[i + std::min(l, count - 1)];
-    }
+    for (int l = 0; l < kWidth; ++l) lane_node[l] = node[i + std::min(l, count - 1)];
     const InverseMeanRatioHessianOf<LanesOf<kWidth>> r =
         InverseMeanRatioHessianLanes<kType, LanesOf<kWidth>>(
-            GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes), lane_node);
+            GatherListLanes<kType, kWidth>(list, i), lane_node);
     for (int l = 0; l < count; ++l) {
       InverseMeanRatioHessianOf<double>& out = derivatives[i + l];
       out.cost = r.cost[l];
@@ -159,11 +160,8 @@ template <ElementType kType, int kWidth>
 void MeanRatioGradientListPass(const ElementList& list, MeanRatioAndGradient* out) {
   for (std::int64_t i = 0; i < list.count; i += kWidth) {
     const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
-    const NodeId* lane_nodes[kWidth];
-    for (int l = 0; l < kWidth; ++l) lane_nodes[l] = list.node_lists[i + std::min(l, count - 1)];
     const MeanRatioGradientOf<kType, LanesOf<kWidth>> r =
-        MeanRatioWithGradientOf<kType, LanesOf<kWidth>>(
-            GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+        MeanRatioWithGradientOf<kType, LanesOf<kWidth>>(GatherListLanes<kType, kWidth>(list, i));
     for (int l = 0; l < count; ++l) {
       MeanRatioAndGradient& element = out[i + l];
       element.quality = r.quality[l];
