@@ -44,6 +44,10 @@ Job::Job(std::string id, wire::UploadedMesh mesh, std::int64_t upload_bytes, Smo
 
 void Job::Publish(v1::ProgressEvent event) {
   std::lock_guard lock(mutex_);
+  PublishLocked(std::move(event));
+}
+
+void Job::PublishLocked(v1::ProgressEvent event) {
   event.set_job_id(id_);
   event.set_sequence(++sequence_);
   if (attempt_ > 0) event.set_attempt(attempt_);
@@ -106,14 +110,16 @@ void Job::Run(absl::Time start) {
     }
     FinishLocked(outcome);
     seconds = absl::ToDoubleSeconds(finished_ - started_);
+    // In the same critical section as the final state: whoever sees the job final also sees its
+    // final event as the latest progress.
+    final_event.set_elapsed_seconds(seconds);
+    final_event.set_final(true);
+    PublishLocked(std::move(final_event));
   }
   if (outcome.code() == absl::StatusCode::kInternal) {
     // An engine fault (e.g. the result check refused the mesh): never a silent failure.
     spdlog::error("job={} phase=result-check error={}", id_, std::string(outcome.message()));
   }
-  final_event.set_elapsed_seconds(seconds);
-  final_event.set_final(true);
-  Publish(std::move(final_event));
   spdlog::info("job={} phase=done nodes={} elements={} method={} seconds={:.3f} outcome={}{}{}",
                id_, nodes_, elements_, MethodName(params_.method), seconds, StateName(state()),
                outcome.ok() ? "" : " error=", outcome.ok() ? "" : std::string(outcome.message()));
@@ -144,14 +150,14 @@ void Job::Cancel(absl::string_view reason) {
     if (cancel_reason_.empty()) cancel_reason_ = std::string(reason);
     if (state_ == v1::JOB_STATE_QUEUED) {
       FinishLocked(absl::CancelledError(absl::StrCat("job ", id_, " cancelled: ", reason)));
+      v1::ProgressEvent final_event;
+      final_event.set_final(true);
+      PublishLocked(std::move(final_event));
       cancelled_while_queued = true;
     }
   }
   cancel_.Cancel();
   if (cancelled_while_queued) {
-    v1::ProgressEvent final_event;
-    final_event.set_final(true);
-    Publish(std::move(final_event));
     spdlog::info(
         "job={} phase=done nodes={} elements={} method={} seconds=0 outcome=CANCELLED "
         "reason=\"{}\" (while queued)",

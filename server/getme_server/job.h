@@ -85,7 +85,8 @@ class Job : public JobHandle {
   bool ExpireIfOlderThan(absl::Time now, absl::Duration ttl);
 
  private:
-  void Publish(v1::ProgressEvent event);  // stamps job id and sequence
+  void Publish(v1::ProgressEvent event);        // stamps job id and sequence
+  void PublishLocked(v1::ProgressEvent event);  // the same, with mutex_ held
   void FinishLocked(absl::Status outcome);
 
   const std::string id_;

@@ -47,6 +47,8 @@ TEST(HttpJobsTest, JobFromGrpcReadsTheSameOverHttpWithCanonicalJsonNames) {
   auto job = Submit(*test.grpc.stub, SmoothRequests(ToWire(SmallHybridMesh()), Simultaneous()));
   ASSERT_TRUE(job.ok()) << job.status();
   const v1::Job done = WaitForState(*test.grpc.stub, job->job_id(), v1::JOB_STATE_SUCCEEDED);
+  // A job seen final carries its final event: the state and that event change together.
+  EXPECT_TRUE(done.latest_progress().final()) << done.latest_progress().DebugString();
 
   const HttpReply reply = HttpGet(*test.http, "/v1/jobs/" + job->job_id());
   ASSERT_EQ(reply.status, 200) << reply.body;
