@@ -95,11 +95,12 @@ dictionary_for() {
 # stat LOG NAME: a value of libFuzzer's -print_final_stats block.
 stat() { sed -n "s/^stat::$2: *//p" "$1" | tail -1; }
 
-summary=()
-failed=0
-for target in "${targets[@]}"; do
+# fuzz_target TARGET: runs one target; writes its summary line to logs/TARGET.summary and its
+# result (passed or FAILED) to logs/TARGET.result.
+fuzz_target() {
+  local target="$1" binary corpus artifacts run_log result lsan_options status_line cov ft
+  local -a dictionary target_options
   binary="$fuzz_dir/${target}_fuzzer"
-  [ -x "$binary" ] || die "unknown fuzz target '$target' ($binary not built)"
   corpus="$fuzz_dir/corpus/$target"
   artifacts="$fuzz_dir/artifacts/$target"
   run_log="$fuzz_dir/logs/$target.log"
@@ -124,18 +125,38 @@ for target in "${targets[@]}"; do
     -print_final_stats=1 -artifact_prefix="$artifacts/" "${dictionary[@]}" "${target_options[@]}" \
     "$corpus" "$fuzz_dir/seeds/$target" > "$run_log" 2>&1 || result=FAILED
   # The last status line ("#N DONE cov: 1234 ft: 5678 corp: …") holds the final coverage.
-  status_line="$(grep -E '^#[0-9]+' "$run_log" | tail -1)"
+  status_line="$(grep -E '^#[0-9]+' "$run_log" | tail -1 || true)"
   cov="$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<< "$status_line")"
   ft="$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$status_line")"
-  if [ "$result" = FAILED ]; then
-    failed=1
-    grep -E 'ERROR: |invariant violated|runtime error|Test unit written' "$run_log" | head -5 >&2 || true
-    echo "full log: $run_log" >&2
-  fi
-  summary+=("$(printf '%-12s %-7s %10s runs %7s exec/s  cov %6s  ft %6s  new units %5s' \
+  printf '%-12s %-7s %10s runs %7s exec/s  cov %6s  ft %6s  new units %5s\n' \
     "$target" "$result" "$(stat "$run_log" number_of_executed_units)" \
     "$(stat "$run_log" average_exec_per_sec)" "${cov:-?}" "${ft:-?}" \
-    "$(stat "$run_log" new_units_added)")")
+    "$(stat "$run_log" new_units_added)" > "$fuzz_dir/logs/$target.summary"
+  echo "$result" > "$fuzz_dir/logs/$target.result"
+}
+
+# Each target is one process on one core: as many run at a time as there are compile jobs
+# (GETME_JOBS), so CI's two cores fuzz every target for the full time in half the wall time.
+for target in "${targets[@]}"; do
+  [ -x "$fuzz_dir/${target}_fuzzer" ] || die "unknown fuzz target '$target' (not built)"
+  rm -f "$fuzz_dir/logs/$target.summary" "$fuzz_dir/logs/$target.result"
+done
+for target in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$(build_jobs)" ]; do wait -n || true; done
+  fuzz_target "$target" &
+done
+wait
+
+summary=()
+failed=0
+for target in "${targets[@]}"; do
+  if [ "$(cat "$fuzz_dir/logs/$target.result" 2> /dev/null)" != passed ]; then
+    failed=1
+    grep -E 'ERROR: |invariant violated|runtime error|Test unit written' \
+      "$fuzz_dir/logs/$target.log" | head -5 >&2 || true
+    echo "$target FAILED; full log: $fuzz_dir/logs/$target.log" >&2
+  fi
+  summary+=("$(cat "$fuzz_dir/logs/$target.summary" 2> /dev/null || echo "$target: no result")")
 done
 
 log "Fuzz summary (${seconds}s per target; build ${build_seconds}s, total $((SECONDS - start))s)"

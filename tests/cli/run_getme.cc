@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "temp_files.h"
+
 extern char** environ;
 
 namespace getme::cli::testing {
@@ -30,7 +32,9 @@ std::string TempPath(const std::string& name) {
   for (char& c : prefix) {
     if (c == '/') c = '_';
   }
-  return ::testing::TempDir() + "/" + prefix + "." + std::to_string(getpid()) + "." + name;
+  std::string path =
+      ::testing::TempDir() + "/" + prefix + "." + std::to_string(getpid()) + "." + name;
+  return getme::testing::DeleteWhenTheRunPasses(path);
 }
 
 RunResult RunGetme(const std::vector<std::string>& args) {

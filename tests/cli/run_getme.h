@@ -17,7 +17,8 @@ RunResult RunGetme(const std::vector<std::string>& args);
 // The same for any executable (e.g. GETME_BINARY_DIR/bin/getme-meshgen to make an input).
 RunResult RunProgram(const std::string& binary, const std::vector<std::string>& args);
 
-// A path in the test temp directory, unique to the running test.
+// A path in the test temp directory, unique to the running test. What is there is deleted when the
+// test executable ends with every test passed.
 std::string TempPath(const std::string& name);
 
 std::vector<std::string> Lines(const std::string& text);

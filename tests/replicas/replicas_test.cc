@@ -29,6 +29,7 @@
 #include "run_getme.h"
 #include "server_process.h"
 #include "server_test_support.h"
+#include "temp_files.h"
 #include "test_certificates.h"
 
 namespace getme::server::testing {
@@ -599,7 +600,8 @@ TEST_F(ReplicasTest, TheJobListIsNewestFirstSaysWhichResultsWaitAndForgetsExpire
 }
 
 TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
-  const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-nostore-", getpid());
+  const std::string log = getme::testing::DeleteWhenTheRunPasses(
+      absl::StrCat(::testing::TempDir(), "/getme-replica-nostore-", getpid()));
   // A port nothing listens on: the one the test's redis has, once it is gone.
   const std::string url = redis_->url();
   redis_.reset();
@@ -645,7 +647,8 @@ TEST_F(ReplicasOverTlsTest, SubmitOnAFetchOnBGivesTheSingleProcessBits) {
 }
 
 TEST_F(ReplicasOverTlsTest, AReplicaThatDoesNotTrustTheStoresCertificateRefusesToStart) {
-  const std::string log = absl::StrCat(::testing::TempDir(), "/getme-replica-untrusted-", getpid());
+  const std::string log = getme::testing::DeleteWhenTheRunPasses(
+      absl::StrCat(::testing::TempDir(), "/getme-replica-untrusted-", getpid()));
   const TestCertificates& certificates = GetTestCertificates();
   const std::string url = absl::StrCat(
       "rediss://:s3cret@127.0.0.1:", redis_->port(), "/0?cacert=", certificates.other_ca_cert,

@@ -7,6 +7,7 @@
 #include "grpcpp/support/client_interceptor.h"
 #include "gtest/gtest.h"
 #include "server_test_support.h"
+#include "temp_files.h"
 #include "test_certificates.h"
 
 namespace getme::server::testing {
@@ -46,7 +47,8 @@ class BearerInterceptorFactory final
 
 const std::string& TokensFile() {
   static const std::string path = [] {
-    const std::string file = ::testing::TempDir() + "/getme-tokens-" + std::to_string(getpid());
+    const std::string file = getme::testing::DeleteWhenTheRunPasses(
+        ::testing::TempDir() + "/getme-tokens-" + std::to_string(getpid()));
     WriteTextFile(file, absl::StrCat("# test tokens\nalice:", kAliceToken, "\n\n  bob:", kBobToken,
                                      "  \n", kBareToken, "\n"));
     return file;

@@ -6,6 +6,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "gtest/gtest.h"
+#include "temp_files.h"
 
 namespace getme::server::testing {
 namespace {
@@ -29,7 +30,7 @@ TestCertificates MakeCertificates() {
     ADD_FAILURE() << "mkdtemp " << pattern;
     return {};
   }
-  const std::string dir = pattern;
+  const std::string dir = getme::testing::DeleteWhenTheRunPasses(pattern);
   WriteTextFile(dir + "/server.ext",
                 "basicConstraints=CA:FALSE\n"
                 "keyUsage=digitalSignature,keyEncipherment\n"

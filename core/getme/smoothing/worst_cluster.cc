@@ -629,6 +629,8 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
   std::vector<std::uint8_t> in_cluster(mesh.element_count(), 0);
   std::vector<double> start;
   std::vector<double> start_quality;
+  std::vector<const NodeId*> node_lists;
+  std::vector<double> measured;
   // The rounds minimise the smooth stand-in until they stall. A stalled round is tried once more
   // with the band widened (kWidenedBand): the wider cluster can move what held the narrow one, and
   // where it gains, the rounds go on. Then a round ascends the minimum itself (AscendMinimum) from
@@ -664,7 +666,12 @@ absl::Status RunWorstCluster(SmoothingContext& context, SmoothingContext::Summar
       Minimise(context, cluster, variable_of, q_start);
     }
     // The stored qualities get MeanRatioOrInvalid's bits, as every other phase writes them.
-    for (ElementId e : cluster.elements) context.quality[e] = ElementQualityOrInvalid(mesh, e);
+    context.NodeListsOf(cluster.elements, node_lists);
+    measured.resize(cluster.elements.size());
+    context.QualitiesOf(cluster.elements, node_lists, measured);
+    for (std::size_t i = 0; i < cluster.elements.size(); ++i) {
+      context.quality[cluster.elements[i]] = measured[i];
+    }
     const SmoothingContext::Summary after = context.Summarize();
     for (NodeId node : cluster.nodes) variable_of[node] = -1;
     for (ElementId e : cluster.elements) in_cluster[e] = 0;

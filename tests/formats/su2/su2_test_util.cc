@@ -42,17 +42,22 @@ std::vector<std::vector<std::string>> SectionRows(const std::string& text,
   return rows;
 }
 
-std::int64_t InvalidVolumeCells(const UnstructuredGrid& grid) {
-  const absl::StatusOr<GridMesh> mesh = GridToMesh(grid);
-  if (!mesh.ok()) return -1;
-  std::int64_t invalid = 0;
+absl::StatusOr<std::vector<std::int64_t>> InvalidVolumeCellIndices(const UnstructuredGrid& grid) {
+  absl::StatusOr<GridMesh> mesh = GridToMesh(grid);
+  if (!mesh.ok()) return mesh.status();
+  std::vector<std::int64_t> invalid;
   for (ElementId element = 0; element < mesh->mesh.element_count(); ++element) {
     DispatchElementType(mesh->mesh.type(element), [&]<ElementType kType>() {
       const auto nodes = GatherNodes<kType>(mesh->mesh, mesh->mesh.element_nodes(element).data());
-      if (!IsValid<kType>(nodes)) ++invalid;
+      if (!IsValid<kType>(nodes)) invalid.push_back(mesh->element_cells[element]);
     });
   }
   return invalid;
+}
+
+std::int64_t InvalidVolumeCells(const UnstructuredGrid& grid) {
+  const absl::StatusOr<std::vector<std::int64_t>> invalid = InvalidVolumeCellIndices(grid);
+  return invalid.ok() ? static_cast<std::int64_t>(invalid->size()) : -1;
 }
 
 }  // namespace getme::formats::testing

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "absl/status/statusor.h"
 #include "formats/mesh_document.h"
 
 namespace getme::formats::testing {
@@ -18,8 +19,11 @@ std::string Su2FixturePath(const std::string& name);
 std::vector<std::vector<std::string>> SectionRows(const std::string& text,
                                                   const std::string& keyword);
 
-// The number of volume cells that are invalid (some corner determinant ≤ 0, core's
-// IsValid) in `grid`.
+// The indices (in `grid.cells`, ascending) of the volume cells that are invalid (some corner
+// determinant ≤ 0, core's IsValid); the error of GridToMesh where the grid makes no mesh.
+absl::StatusOr<std::vector<std::int64_t>> InvalidVolumeCellIndices(const UnstructuredGrid& grid);
+
+// How many volume cells of `grid` are invalid, as above; -1 where the grid makes no mesh.
 std::int64_t InvalidVolumeCells(const UnstructuredGrid& grid);
 
 }  // namespace getme::formats::testing
