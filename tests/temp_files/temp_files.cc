@@ -49,7 +49,7 @@ TempFileCleaner& Cleaner() {
 
 }  // namespace
 
-const std::string& DeleteWhenTheRunPasses(const std::string& path) {
+std::string DeleteWhenTheRunPasses(std::string path) {
   Cleaner().Add(path);
   return path;
 }
