@@ -11,6 +11,10 @@ die() {
 
 # Parallel jobs for builds and ctest: GETME_JOBS if set, else every core.
 build_jobs() { echo "${GETME_JOBS:-$(nproc)}"; }
+# Parallel ctest jobs: GETME_TEST_JOBS if set, else one more than build_jobs. Many tests wait on
+# the processes, sockets and timers of servers and clients they start: with one test per core the
+# Release suite kept 1.5 of 2 cores busy (docs/development.md, CI).
+test_jobs() { echo "${GETME_TEST_JOBS:-$(($(build_jobs) + 1))}"; }
 
 # Build directory for a sanitizer name ('' = the plain Release build).
 build_dir_for() {

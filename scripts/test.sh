@@ -9,7 +9,8 @@
 #   GETME_FUZZ_SECONDS           seconds per fuzz target in the fuzz stage (default 6; 0 skips it)
 #   GETME_SANITIZER_CTEST_ARGS   ctest filter for the sanitizer runs (default: -LE slow, i.e. all
 #                                tests but those labelled slow), e.g. "-R Smoother" or "" for all
-#   GETME_JOBS                   parallel compile and test jobs (default: every core)
+#   GETME_JOBS                   parallel compile jobs (default: every core)
+#   GETME_TEST_JOBS              parallel ctest jobs (default: GETME_JOBS + 1)
 set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -43,7 +44,7 @@ run_stage() {
     log "Testing $name ($build_dir${*:+, ctest $*})"
     rm -f "$junit"
     run_instrumented "$sanitizer" ctest --test-dir "$build_dir" --output-on-failure \
-      --output-junit "$junit" --no-tests=error --parallel "$(build_jobs)" "$@" ||
+      --output-junit "$junit" --no-tests=error --parallel "$(test_jobs)" "$@" ||
       result="FAILED (tests)"
   fi
   [ "$result" != "FAILED (tests)" ] || failed_reports+=("$name=$junit")
