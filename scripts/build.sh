@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the dependencies, then configures and builds the project with Ninja.
+# Installs what building needs (scripts/setup.sh --build-only), then configures and builds the
+# project with Ninja.
 #   scripts/build.sh                      Release build in build/ (executables in build/bin/)
 #   scripts/build.sh --sanitize address   ASan+UBSan build in build-asan/ (clang, with fuzz targets)
 #   scripts/build.sh --sanitize thread    TSan build in build-tsan/ (clang)
@@ -9,7 +10,7 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-usage() { sed -n '2,6s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
+usage() { sed -n '2,8s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
 
 sanitizer=""
 targets=()
@@ -41,7 +42,8 @@ while [ $# -gt 0 ]; do
 done
 build_dir="$(build_dir_for "$sanitizer")"
 
-bash "$GETME_ROOT/scripts/setup.sh"
+# Only the [build] packages: scripts/test.sh installs the others meanwhile, in the background.
+bash "$GETME_ROOT/scripts/setup.sh" --build-only
 
 configure=(cmake -S "$GETME_ROOT" -B "$build_dir" -DGETME_SANITIZE="$sanitizer")
 if [ -z "$sanitizer" ]; then

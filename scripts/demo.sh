@@ -48,6 +48,8 @@ stop_engine() {
 }
 run_getme() { "$getme" "$@" --server "$server_address"; }
 
+# Every package first: the report needs gnuplot, which the build does not.
+bash "$GETME_ROOT/scripts/setup.sh"
 # Only what the demo runs: the CLI (quality, smooth, report) and the server, with the libraries
 # they link: about 40 % of the full build's steps (docs/development.md, "First minutes").
 # scripts/test.sh builds the rest in the same build/.

@@ -2,13 +2,37 @@
 # Installs every Debian bookworm package the build, the tests and the demo use (scripts/packages.txt).
 # Idempotent: when all of them are installed already it only checks, so re-runs take a second.
 # Needs root (or sudo) only when something is missing. Works on a minimal debootstrap of bookworm.
+#   scripts/setup.sh                every package
+#   scripts/setup.sh --build-only   the [build] section only: what configuring and compiling need
 set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+sections="build run"
+case "${1:-}" in
+  "") ;;
+  --build-only) sections="build" ;;
+  *) die "unknown argument '$1' (usage: scripts/setup.sh [--build-only])" ;;
+esac
+
 package_list="$GETME_ROOT/scripts/packages.txt"
-mapfile -t packages < <(sed -e 's/#.*//' -e 's/[[:space:]]//g' -e '/^$/d' "$package_list")
-[ "${#packages[@]}" -gt 0 ] || die "$package_list lists no packages"
+packages=()
+section=""
+line_number=0
+while IFS= read -r line || [ -n "$line" ]; do
+  line_number=$((line_number + 1))
+  entry="$(sed -e 's/#.*//' -e 's/[[:space:]]//g' <<< "$line")"
+  case "$entry" in
+    "") ;;
+    "[build]" | "[run]") section="${entry:1:-1}" ;;
+    "["*) die "$package_list:$line_number: unknown section '$entry' (expected [build] or [run])" ;;
+    *)
+      [ -n "$section" ] || die "$package_list:$line_number: '$entry' comes before any [build] or [run] section"
+      [[ " $sections " != *" $section "* ]] || packages+=("$entry")
+      ;;
+  esac
+done < "$package_list"
+[ "${#packages[@]}" -gt 0 ] || die "$package_list lists no packages for: $sections"
 
 command -v dpkg-query > /dev/null || die "dpkg-query not found: this script supports Debian bookworm only"
 
@@ -24,7 +48,7 @@ for package in "${packages[@]}"; do
 done
 
 if [ "${#missing[@]}" -eq 0 ]; then
-  echo "setup: all ${#packages[@]} packages of scripts/packages.txt are installed"
+  echo "setup: all ${#packages[@]} packages of scripts/packages.txt ($sections) are installed"
   exit 0
 fi
 

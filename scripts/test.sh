@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds, and runs the whole test suite: the Release build (build/),
+# Installs the dependencies (those only the tests run while the Release build compiles), builds,
+# and runs the whole test suite: the Release build (build/),
 # then ASan+UBSan (build-asan/), then TSan (build-tsan/) on the tests of threaded code (label
 # `threads`); then a short run of every libFuzzer target (scripts/fuzz.sh, build-asan/). Exits
 # nonzero if any build, test or fuzz target fails; every stage still runs, and the failed tests
@@ -41,6 +42,7 @@ run_stage() {
     ${target:+--target "$target"} || result="FAILED (build)"
   build_seconds=$((SECONDS - start))
   if [ "$result" = passed ]; then
+    wait_for_run_packages
     log "Testing $name ($build_dir${*:+, ctest $*})"
     rm -f "$junit"
     run_instrumented "$sanitizer" ctest --test-dir "$build_dir" --output-on-failure \
@@ -53,7 +55,28 @@ run_stage() {
     $((SECONDS - start - build_seconds)))")
 }
 
-bash "$GETME_ROOT/scripts/setup.sh"
+# What the builds need first; the packages only the tests run (scripts/packages.txt, [run]:
+# OpenFOAM, chromium, Python's, ...) install in the background while the Release build compiles,
+# since apt works on one core: about 150 s of a fresh machine's 250 s of apt (docs/development.md).
+# The first stage to test waits for them.
+bash "$GETME_ROOT/scripts/setup.sh" --build-only
+run_packages_log="$(mktemp)"
+bash "$GETME_ROOT/scripts/setup.sh" > "$run_packages_log" 2>&1 &
+run_packages_pid=$!
+
+# wait_for_run_packages: waits for the background setup.sh, prints its output, and stops the
+# run if it failed (as setup.sh failing in the foreground would).
+wait_for_run_packages() {
+  [ -n "$run_packages_pid" ] || return 0
+  local status=0
+  wait "$run_packages_pid" || status=$?
+  run_packages_pid=""
+  log "Packages the tests run (scripts/setup.sh, in the background since the first build began)"
+  cat "$run_packages_log"
+  rm -f "$run_packages_log"
+  [ "$status" = 0 ] || die "scripts/setup.sh failed (exit $status): the tests cannot run"
+}
+
 run_stage release "" ""
 if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ]; then
   summary+=("sanitizers skipped (GETME_SKIP_SANITIZERS=1)")
@@ -83,6 +106,8 @@ if [ "${GETME_SKIP_SANITIZERS:-0}" = 1 ] || [ "$fuzz_seconds" = 0 ]; then
 else
   run_fuzz_stage "$fuzz_seconds"
 fi
+
+wait_for_run_packages  # every build failed: still report an install failure, and leave no apt behind
 
 # The failed tests and why, last but for the summary: a CI log is often seen only by its tail.
 for report in "${failed_reports[@]}"; do

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <regex>
 #include <set>
 #include <string>
@@ -100,6 +101,9 @@ INSTANTIATE_TEST_SUITE_P(Mesquite, SharedMeshTest, ::testing::ValuesIn(AllShared
 // ../shared/meshes/README.md documents for mesquite/ (17 meshes when these tests were written, 20
 // since the corpus grew), so a missing or half-copied folder cannot pass with fewer meshes.
 TEST(SharedMeshes, EveryMeshTheReadmeListsIsPresent) {
+  ASSERT_TRUE(std::filesystem::is_directory(std::string(GETME_SHARED_MESHES) + "/mesquite"))
+      << "no folder " << GETME_SHARED_MESHES << "/mesquite: the tests read the shared meshes "
+      << "there (configure with -DGETME_SHARED_MESHES=<folder> to point elsewhere)";
   const std::string readme = ReadText(std::string(GETME_SHARED_MESHES) + "/README.md");
   const std::string mesquite_part = readme.substr(0, readme.find("## su2/"));
   std::set<std::string> listed;
