@@ -21,7 +21,8 @@ section=""
 line_number=0
 while IFS= read -r line || [ -n "$line" ]; do
   line_number=$((line_number + 1))
-  entry="$(sed -e 's/#.*//' -e 's/[[:space:]]//g' <<< "$line")"
+  entry="${line%%#*}"
+  entry="${entry//[[:space:]]/}"
   case "$entry" in
     "") ;;
     "[build]" | "[run]") section="${entry:1:-1}" ;;
