@@ -37,15 +37,10 @@ done < "$package_list"
 
 command -v dpkg-query > /dev/null || die "dpkg-query not found: this script supports Debian bookworm only"
 
-# Virtual packages that installed packages provide (e.g. NodeSource's nodejs provides npm, and
-# conflicts with Debian's npm): those count as installed.
-provided="$(dpkg-query -W -f='${db:Status-Status} ${Provides}\n' 2> /dev/null |
-  sed -n 's/^installed //p' | tr ',' '\n' | sed -e 's/([^)]*)//g' -e 's/[[:space:]]//g' | sort -u)"
-
 missing=()
 for package in "${packages[@]}"; do
   status="$(dpkg-query -W -f='${db:Status-Status}' "$package" 2> /dev/null || true)"
-  [ "$status" = installed ] || grep -qxF "$package" <<< "$provided" || missing+=("$package")
+  [ "$status" = installed ] || missing+=("$package")
 done
 
 if [ "${#missing[@]}" -eq 0 ]; then

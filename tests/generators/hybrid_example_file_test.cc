@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <string>
 
+#include "absl/strings/str_cat.h"
 #include "formats/grid_mesh.h"
 #include "formats/unstructured_grid.h"
 #include "formats/vtk_reader.h"
@@ -17,7 +18,7 @@ namespace getme::meshgen {
 namespace {
 
 TEST(HybridExampleFileTest, IsTheHybridBlockItClaimsToBeWithAllFourTypes) {
-  const std::string path = std::string(GETME_TEST_DATA) + "/hybrid-example.vtk";
+  const std::string path = absl::StrCat(GETME_TEST_DATA, "/hybrid-example.vtk");
   absl::StatusOr<formats::UnstructuredGrid> file = formats::ReadVtkFile(path);
   ASSERT_TRUE(file.ok()) << file.status();
   EXPECT_EQ(file->encoding, formats::Encoding::kAscii);

@@ -1,0 +1,1 @@
+// The translation unit CMake builds tests/precompiled's header with; it has no code of its own.
