@@ -57,8 +57,8 @@ run_stage() {
 
 # What the builds need first; the packages only the tests run (scripts/packages.txt, [run]:
 # OpenFOAM, chromium, Python's, ...) install in the background while the Release build compiles,
-# and the first stage to test waits for them. On a fresh machine they are 150 s of apt's 250 s;
-# beside the build they took longer, and the run 30-60 s less (docs/development.md, CI).
+# and the first stage to test waits for them. Beside the build, in a fresh root, they took 163 s
+# (docs/development.md, CI).
 bash "$GETME_ROOT/scripts/setup.sh" --build-only
 run_packages_log="$(mktemp)"
 bash "$GETME_ROOT/scripts/setup.sh" > "$run_packages_log" 2>&1 &

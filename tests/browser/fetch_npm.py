@@ -53,19 +53,16 @@ def unpack(data: bytes, destination: pathlib.Path) -> None:
     # The registry's tarballs hold everything under package/; nothing may land outside it, and
     # a refused tarball writes nothing.
     with tarfile.open(fileobj=io.BytesIO(data), mode="r:gz") as archive:
-        members = archive.getmembers()
-        for member in members:
-            parts = pathlib.PurePosixPath(member.name).parts
+        members = [(member, pathlib.PurePosixPath(member.name).parts) for member in archive]
+        for member, parts in members:
             if not parts or parts[0] != "package" or ".." in parts:
                 sys.exit(f"fetch_npm: unexpected path in {NPM_TARBALL}: {member.name}")
         staging = destination.with_name(destination.name + ".partial")
         shutil.rmtree(staging, ignore_errors=True)
-        for member in members:
-            parts = pathlib.PurePosixPath(member.name).parts
-            if len(parts) == 1 or not (member.isfile() or member.isdir()):
-                continue
-            member.name = str(pathlib.PurePosixPath(*parts[1:]))
-            archive.extract(member, staging)
+        for member, parts in members:
+            if len(parts) > 1 and (member.isfile() or member.isdir()):
+                member.name = str(pathlib.PurePosixPath(*parts[1:]))
+                archive.extract(member, staging)
     shutil.rmtree(destination, ignore_errors=True)
     staging.rename(destination)
 
