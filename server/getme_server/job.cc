@@ -270,7 +270,7 @@ void Job::RestoreResult(JobResult result) {
 bool Job::ExpireIfOlderThan(absl::Time now, absl::Duration ttl) {
   std::lock_guard lock(mutex_);
   if (state_ == v1::JOB_STATE_QUEUED || state_ == v1::JOB_STATE_RUNNING) return false;
-  if (now - finished_ < ttl) return false;
+  if (now - finished_ < ttl || result_holds_ > 0) return false;
   if (result_ != nullptr) {
     result_.reset();
     result_expired_ = true;
@@ -278,6 +278,17 @@ bool Job::ExpireIfOlderThan(absl::Time now, absl::Duration ttl) {
   }
   // The record outlives its result for a while, so GetResult can say why the result is gone.
   return now - finished_ >= 2 * ttl;
+}
+
+ResultHold Job::HoldResult() {
+  {
+    std::lock_guard lock(mutex_);
+    ++result_holds_;
+  }
+  return ResultHold([job = shared_from_this()] {
+    std::lock_guard lock(job->mutex_);
+    --job->result_holds_;
+  });
 }
 
 }  // namespace getme::server

@@ -14,6 +14,7 @@
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
+#include "getme_server/job_directory.h"
 #include "getme_server/job_handle.h"
 #include "getme_server/job_run.h"
 #include "getme_server/job_trace.h"
@@ -26,7 +27,7 @@ namespace getme::server {
 // One smoothing job's state machine: QUEUED → RUNNING → SUCCEEDED | FAILED | CANCELLED (QUEUED →
 // CANCELLED when cancelled before a worker takes it). Thread-safe; shared by the registry, a worker
 // and the handlers watching it.
-class Job : public JobHandle {
+class Job : public JobHandle, public std::enable_shared_from_this<Job> {
  public:
   // `upload_bytes` is the encoded size of the uploaded mesh. `metrics` (may be null) counts the
   // job's work and outcome; it must outlive the job.
@@ -81,8 +82,11 @@ class Job : public JobHandle {
   // fetch it again (until the time to live passes).
   void RestoreResult(JobResult result);
   // Drops an unfetched result `ttl` after the job finished; true once the job is final for
-  // twice that (the registry then forgets it).
+  // twice that (the registry then forgets it). A held result neither expires nor is forgotten.
   bool ExpireIfOlderThan(absl::Time now, absl::Duration ttl);
+  // Keeps the result until the returned hold is destroyed (job_directory.h: ResultHold), for the
+  // Smooth call that waits on the job. The hold shares the job (made by std::make_shared).
+  ResultHold HoldResult();
 
  private:
   void Publish(v1::ProgressEvent event);        // stamps job id and sequence
@@ -113,6 +117,7 @@ class Job : public JobHandle {
   JobTrace trace_;
   bool result_taken_ = false;
   bool result_expired_ = false;
+  int result_holds_ = 0;
   std::unique_ptr<JobResult> result_;  // input mesh while queued/running, result once SUCCEEDED
 };
 

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "absl/status/status.h"
@@ -31,12 +33,46 @@ struct JobSubmission {
   wire::UploadedMesh mesh;
   std::int64_t upload_bytes = 0;  // encoded size, counted against --max_queued_bytes
   ReceivedUpload received;        // filled only when the directory keeps_uploads()
+  // The call that submits the job waits on it and fetches the result itself (Smooth): see
+  // SubmittedJob::result_hold.
+  bool submitter_fetches_result = false;
+};
+
+// Keeps a job's result from expiring until it is destroyed (moved-from holds release nothing).
+// Smooth fetches its job's result the moment the job ends, but on a loaded machine that moment can
+// come later than a short --result_ttl after the end; the result must not expire under the call
+// that is about to send it.
+class ResultHold {
+ public:
+  ResultHold() = default;
+  explicit ResultHold(std::function<void()> release) : release_(std::move(release)) {}
+  ResultHold(ResultHold&& other) noexcept : release_(std::exchange(other.release_, nullptr)) {}
+  ResultHold& operator=(ResultHold&& other) noexcept {
+    if (this != &other) {
+      Release();
+      release_ = std::exchange(other.release_, nullptr);
+    }
+    return *this;
+  }
+  ResultHold(const ResultHold&) = delete;
+  ResultHold& operator=(const ResultHold&) = delete;
+  ~ResultHold() { Release(); }
+
+ private:
+  void Release() {
+    if (release_) std::exchange(release_, nullptr)();
+  }
+  std::function<void()> release_;
 };
 
 // A queued job and a reader of its events from the first one (Smooth forwards them).
 struct SubmittedJob {
   std::shared_ptr<JobHandle> job;
   std::shared_ptr<EventSource> events;
+  // For a submitter_fetches_result submission to this process's registry: the result does not
+  // expire while this is alive. Empty otherwise (a shared store counts the time to live in the
+  // store).
+  ResultHold result_hold;
 };
 
 // Where the front ends queue and find jobs: this process's JobRegistry (the default), or a store

@@ -93,8 +93,9 @@ absl::StatusOr<SubmittedJob> JobRegistry::Submit(JobSubmission submission, std::
                                    progress_interval_, metrics_);
   // Watching before queueing: the caller sees every event from the first one.
   std::shared_ptr<EventSource> events = job->Watch();
+  ResultHold hold = submission.submitter_fetches_result ? job->HoldResult() : ResultHold();
   if (auto s = Submit(job, std::move(owner)); !s.ok()) return s;
-  return SubmittedJob{std::move(job), std::move(events)};
+  return SubmittedJob{std::move(job), std::move(events), std::move(hold)};
 }
 
 void JobRegistry::Adopt(std::shared_ptr<Job> job, std::string owner) {

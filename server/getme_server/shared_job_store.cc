@@ -116,7 +116,7 @@ absl::StatusOr<SubmittedJob> SharedJobStore::Submit(JobSubmission submission, st
       case 0: {
         auto job = std::make_shared<StoredJob>(*this, id);
         std::shared_ptr<EventSource> events = job->WatchEvents();
-        return SubmittedJob{std::move(job), std::move(events)};
+        return SubmittedJob{std::move(job), std::move(events), ResultHold()};
       }
       case 1:
         return absl::ResourceExhaustedError(absl::StrCat(

@@ -171,6 +171,7 @@ grpc::Status SmootherService::Smooth(
   if (!slot.ok()) return ToGrpcStatus(slot.status());
   absl::StatusOr<JobSubmission> submission = ReadSubmission(context, stream);
   if (!submission.ok()) return ToGrpcStatus(submission.status());
+  submission->submitter_fetches_result = true;  // held until this call returns
   // The directory hands back a reader of every event from the first one.
   absl::StatusOr<SubmittedJob> submitted = jobs_.Submit(*std::move(submission), *owner);
   if (!submitted.ok()) return ToGrpcStatus(submitted.status());
