@@ -58,7 +58,8 @@ if held + bytes > tonumber(ARGV[8]) then
   return {2, held}
 end
 redis.call('HSET', job, 'owner', owner, 'state', '1', 'describe', ARGV[4], 'header', ARGV[5],
-           'upload_bytes', ARGV[6], 'attempt', '1', 'seq', '0', 'created_ms', ARGV[9])
+           'upload_bytes', ARGV[6], 'attempt', '1', 'seq', '0', 'created_ms', ARGV[9],
+           'fetcher', ARGV[10])
 redis.call('PERSIST', job .. ':upload')
 redis.call('RPUSH', p .. 'queue', id)
 redis.call('INCRBY', p .. 'held_bytes', bytes)
@@ -82,8 +83,8 @@ while true do
     redis.call('HSET', job, 'state', '2', 'replica', replica)
     redis.call('ZADD', p .. 'running', now_ms() + lease, id)
     local f = redis.call('HMGET', job, 'owner', 'header', 'upload_bytes', 'attempt', 'seq',
-                         'created_ms', 'cancel')
-    return {id, f[1], f[2], f[3], f[4], f[5], f[6], f[7] or ''}
+                         'created_ms', 'cancel', 'fetcher')
+    return {id, f[1], f[2], f[3], f[4], f[5], f[6], f[7] or '', f[8] or '0'}
   end
 end
 )lua");

@@ -1,5 +1,6 @@
 #include "getme_server/shared_job_store.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "absl/random/random.h"
@@ -109,7 +110,8 @@ absl::StatusOr<SubmittedJob> SharedJobStore::Submit(JobSubmission submission, st
         store_scripts::Submit(), {},
         {prefix_, id, owner, describe.SerializeAsString(), submission.header.SerializeAsString(),
          absl::StrCat(submission.upload_bytes), absl::StrCat(options_.max_queued_jobs),
-         absl::StrCat(options_.max_queued_bytes), absl::StrCat(created_ms)});
+         absl::StrCat(options_.max_queued_bytes), absl::StrCat(created_ms),
+         submission.submitter_fetches_result ? "1" : "0"});
     if (!queued.ok()) return queued.status();
     const auto& reply = queued->elements();
     switch (reply.empty() ? -1 : reply[0].integer()) {
@@ -201,6 +203,7 @@ absl::StatusOr<std::optional<TakenJob>> SharedJobStore::TakeQueued() {
   (void)absl::SimpleAtoi(f[6].str(), &created_ms);
   job.created_unix_seconds = static_cast<double>(created_ms) / 1000.0;
   job.cancel_reason = f[7].str();
+  job.submitter_fetches_result = f[8].str() == "1";
   const std::string upload_key = JobKey(job.id) + ":upload";
   for (std::int64_t start = 0;; start += kPartsPerCommand) {
     absl::StatusOr<redis::RedisReply> parts =
@@ -242,17 +245,23 @@ absl::StatusOr<bool> SharedJobStore::Append(const std::string& id, const v1::Job
   return reply->integer() == 1;
 }
 
-absl::StatusOr<bool> SharedJobStore::Finish(const std::string& id, std::uint32_t attempt,
-                                            const v1::Job& describe,
+absl::StatusOr<bool> SharedJobStore::Finish(const TakenJob& taken, const v1::Job& describe,
                                             const std::optional<v1::SmoothResult>& summary,
                                             const std::vector<std::string>& result_messages,
                                             const v1::ProgressEvent& final_event) {
+  const std::string& id = taken.id;
+  // A Smooth call fetches the result the moment it reads the final event, but a loaded replica
+  // may read it later than a short --result_ttl after the end; the store cannot see that call,
+  // so such a result lives at least one lease, the time a live replica is trusted to answer in.
+  const absl::Duration result_life = taken.submitter_fetches_result
+                                         ? std::max(options_.result_ttl, options_.job_lease)
+                                         : options_.result_ttl;
   std::string result_key;
   if (!result_messages.empty()) {
     // A key per attempt: a replica that lost the job but still runs can never mix its messages
     // into the result of the attempt that replaced it.
-    result_key = absl::StrCat(JobKey(id), ":result:", attempt);
-    if (auto s = PushAll(*redis_, result_key, result_messages, options_.result_ttl); !s.ok()) {
+    result_key = absl::StrCat(JobKey(id), ":result:", taken.attempt);
+    if (auto s = PushAll(*redis_, result_key, result_messages, result_life); !s.ok()) {
       // Part of it may be there: freed at once, so the job can still be ended as failed.
       (void)redis_->Command({"DEL", result_key});
       return s;
@@ -262,7 +271,7 @@ absl::StatusOr<bool> SharedJobStore::Finish(const std::string& id, std::uint32_t
       store_scripts::Finish(), {},
       {prefix_, id, replica_, absl::StrCat(static_cast<int>(describe.state())),
        describe.SerializeAsString(), summary.has_value() ? summary->SerializeAsString() : "",
-       result_key, final_event.SerializeAsString(), Ms(options_.result_ttl),
+       result_key, final_event.SerializeAsString(), Ms(result_life),
        absl::StrCat(final_event.sequence())});
   if (!reply.ok()) return reply.status();
   if (reply->integer() != 1 && !result_key.empty()) (void)redis_->Command({"DEL", result_key});

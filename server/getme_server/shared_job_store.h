@@ -27,6 +27,9 @@ struct TakenJob {
   std::uint64_t last_sequence = 0;  // the events so far; the run continues after it
   double created_unix_seconds = 0;
   std::string cancel_reason;  // asked while it was being requeued: stop at once
+  // Submitted by a Smooth call, which fetches the result itself: Finish keeps it at least one
+  // job lease, however short --result_ttl is.
+  bool submitter_fetches_result = false;
   ReceivedUpload upload;
 };
 
@@ -70,7 +73,7 @@ class SharedJobStore : public JobDirectory {
                               std::uint64_t last_sequence, const std::vector<std::string>& events);
   // Stores the result messages (serialized v1::SmoothResponse) under a key of this attempt,
   // then ends the job with its final event; false if the job is no longer this replica's.
-  absl::StatusOr<bool> Finish(const std::string& id, std::uint32_t attempt, const v1::Job& describe,
+  absl::StatusOr<bool> Finish(const TakenJob& taken, const v1::Job& describe,
                               const std::optional<v1::SmoothResult>& summary,
                               const std::vector<std::string>& result_messages,
                               const v1::ProgressEvent& final_event);

@@ -216,7 +216,7 @@ void StoreWorkers::RunTaken(TakenJob taken, std::shared_ptr<Running> running) {
     final_event.set_final(true);
     spdlog::error("job={} phase=done outcome=FAILED error={}", taken.id,
                   std::string(why.message()));
-    (void)store_.Finish(taken.id, taken.attempt, describe, std::nullopt, {}, final_event);
+    (void)store_.Finish(taken, describe, std::nullopt, {}, final_event);
     Unregister(taken.id);
     return;
   }
@@ -250,6 +250,9 @@ void StoreWorkers::RunTaken(TakenJob taken, std::shared_ptr<Running> running) {
     std::lock_guard lock(mutex_);
     running->job = job;
   }
+  // The local registry's sweeper counts --result_ttl too: without the hold, a short one dropped
+  // the result before it was copied to the store below, and the job ended SUCCEEDED with none.
+  ResultHold until_stored = job->HoldResult();
   local_.Adopt(job, taken.owner);
   std::string cancel = taken.cancel_reason;
   {
@@ -298,7 +301,7 @@ void StoreWorkers::RunTaken(TakenJob taken, std::shared_ptr<Running> running) {
   }
   const v1::Job described = DescribeForStore(*job, *running);
   absl::StatusOr<bool> finished =
-      store_.Finish(taken.id, taken.attempt, described, job->Summary(), messages, *final_event);
+      store_.Finish(taken, described, job->Summary(), messages, *final_event);
   if (!finished.ok() && !messages.empty()) {
     // The result did not fit (a full Redis refuses writes): the job fails saying so, rather than
     // expiring, being requeued and failing the same way again.
@@ -311,7 +314,7 @@ void StoreWorkers::RunTaken(TakenJob taken, std::shared_ptr<Running> running) {
             "job ", taken.id, " succeeded but the shared job store could not keep its result (",
             finished.status().message(), "); submit it again once results were fetched")),
         failed);
-    finished = store_.Finish(taken.id, taken.attempt, failed, std::nullopt, {}, *final_event);
+    finished = store_.Finish(taken, failed, std::nullopt, {}, *final_event);
   }
   if (!finished.ok()) {
     spdlog::error("job={} end not written to the job store: {}", taken.id,

@@ -599,6 +599,26 @@ TEST_F(ReplicasTest, TheJobListIsNewestFirstSaysWhichResultsWaitAndForgetsExpire
   ExpectStoreIdle();
 }
 
+// A 1 ms time to live: every result a Smooth call did not fetch is gone before anyone could
+// fetch it. The Smooth calls still get theirs (the store keeps a result a Smooth call waits for at
+// least one lease); a SubmitJob result is gone as the time to live says.
+TEST_F(ReplicasTest, ASmoothCallGetsItsResultHoweverShortTheTimeToLive) {
+  StartReplicas(1, {"--result_ttl=1ms"});
+  const v1::Mesh mesh = ToWire(TetBlock(4, 0.3));
+  for (int call = 0; call < 3; ++call) {
+    absl::StatusOr<remote::RemoteSmoothResult> result = replicas_[0].client->Smooth(mesh, {}, {});
+    ASSERT_TRUE(result.ok()) << result.status();
+    EXPECT_EQ(result->mesh.coordinates().size(), mesh.coordinates().size());
+  }
+  absl::StatusOr<v1::Job> submitted = replicas_[0].client->SubmitJob(mesh, {});
+  ASSERT_TRUE(submitted.ok()) << submitted.status();
+  ASSERT_TRUE(replicas_[0].client->WatchJob(submitted->job_id(), {}).ok());
+  absl::SleepFor(absl::Milliseconds(50));
+  EXPECT_EQ(replicas_[0].client->GetResult(submitted->job_id()).status().code(),
+            absl::StatusCode::kNotFound);
+  ExpectStoreIdle();
+}
+
 TEST_F(ReplicasTest, AReplicaThatCannotReachItsStoreRefusesToStart) {
   const std::string log = getme::testing::DeleteWhenTheRunPasses(
       absl::StrCat(::testing::TempDir(), "/getme-replica-nostore-", getpid()));
