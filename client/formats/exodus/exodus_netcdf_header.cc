@@ -1,5 +1,7 @@
 #include "formats/exodus/exodus_netcdf_header.h"
 
+#include <netcdf.h>
+
 #include <cstdint>
 #include <fstream>
 #include <optional>
@@ -84,9 +86,18 @@ absl::Status Malformed(const HeaderCursor& cursor, absl::string_view what) {
       absl::StrCat("netCDF header, byte ", cursor.offset(), ": ", what, " does not fit the file"));
 }
 
-// A name: its length, then the characters padded to 4 bytes.
+// A name: its length, then the characters padded to 4 bytes. netCDF 4.9.0 reads a name of any
+// length from the header, but nc_inq_attname, nc_inq_dimname and nc_inq_varname copy it whole
+// into the caller's buffer, which every caller (getme's header checks, the Exodus library) sizes
+// NC_MAX_NAME + 1: a 517-byte attribute name overflowed getme's (found by the exodus fuzz target
+// on 2026-11-28).
 absl::Status SkipName(HeaderCursor& cursor, absl::string_view what) {
   const std::optional<std::uint64_t> length = cursor.Count();
+  if (length.has_value() && *length > NC_MAX_NAME) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("netCDF header, byte ", cursor.offset(), ": ", what, " name is ", *length,
+                     " bytes long; netCDF names have at most ", NC_MAX_NAME, " (NC_MAX_NAME)"));
+  }
   if (!length.has_value() || !cursor.Skip((*length + 3) / 4 * 4)) {
     return Malformed(cursor, absl::StrCat(what, " name"));
   }
@@ -114,7 +125,10 @@ absl::Status SkipAttributes(HeaderCursor& cursor, absl::string_view owner) {
   absl::StatusOr<std::uint64_t> count = ListCount(cursor, kAttributeTag, 12, what);
   if (!count.ok()) return count.status();
   for (std::uint64_t k = 0; k < *count; ++k) {
-    if (absl::Status status = SkipName(cursor, what); !status.ok()) return status;
+    if (absl::Status status = SkipName(cursor, absl::StrCat(owner, " attribute ", k));
+        !status.ok()) {
+      return status;
+    }
     const std::optional<std::uint64_t> type = cursor.Unsigned(4);
     const std::optional<std::uint64_t> values = cursor.Count();
     if (!type.has_value() || !values.has_value()) return Malformed(cursor, what);
@@ -150,7 +164,9 @@ absl::Status CheckNetcdfClassicHeader(const std::string& path) {
   absl::StatusOr<std::uint64_t> dimensions = ListCount(cursor, kDimensionTag, 8, "dimension list");
   if (!dimensions.ok()) return dimensions.status();
   for (std::uint64_t k = 0; k < *dimensions; ++k) {
-    if (absl::Status status = SkipName(cursor, "dimension"); !status.ok()) return status;
+    if (absl::Status status = SkipName(cursor, absl::StrCat("dimension ", k)); !status.ok()) {
+      return status;
+    }
     const std::optional<std::uint64_t> length = cursor.Count();
     if (!length.has_value()) return Malformed(cursor, "dimension length");
     if (*length > kHeaderValuesPerFileByte * size) {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 
 #include "exodus_test_util.h"
@@ -110,6 +111,36 @@ TEST(ExodusMalformed, NetcdfHeaderCountsBeyondTheFileAreRefusedFirst) {
                 .status()
                 .message(),
             "global attribute 'file_size' has 1000 values; Exodus II stores one number there");
+}
+
+// netCDF copies a header's names whole into NC_MAX_NAME + 1 bytes (exodus_netcdf_header.h); the
+// exodus fuzz target's find was a global attribute name 517 bytes long.
+TEST(ExodusMalformed, NetcdfNamesLongerThanNcMaxNameAreRefusedFirst) {
+  // CDF-1, numrecs 0, no dimensions, one global attribute whose name is `name_length` bytes, of
+  // one character; no variables.
+  auto header = [](std::uint32_t name_length) {
+    auto big_endian = [](std::uint32_t value) {
+      return std::string{static_cast<char>(value >> 24), static_cast<char>(value >> 16),
+                         static_cast<char>(value >> 8), static_cast<char>(value)};
+    };
+    std::string bytes("CDF\x01", 4);
+    bytes += big_endian(0) + big_endian(0) + big_endian(0);  // numrecs; the dimensions ABSENT
+    bytes += big_endian(0x0C) + big_endian(1) + big_endian(name_length);
+    bytes += std::string((name_length + 3) / 4 * 4, 'a');
+    bytes += big_endian(2) + big_endian(1) + std::string("x\0\0\0", 4);  // NC_CHAR "x"
+    bytes += big_endian(0) + big_endian(0);                              // no variables
+    return bytes;
+  };
+  const absl::StatusOr<MeshDocument> long_name = ParseExodus(header(517));
+  EXPECT_EQ(long_name.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(long_name.status().message(),
+            "netCDF header, byte 28: global attribute 0 name is 517 bytes long; netCDF names "
+            "have at most 256 (NC_MAX_NAME)");
+  // The longest name netCDF allows passes this check: the file then fails as no Exodus file.
+  const absl::StatusOr<MeshDocument> longest = ParseExodus(header(256));
+  EXPECT_EQ(longest.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_EQ(longest.status().message().find("netCDF header"), std::string::npos)
+      << longest.status();
 }
 
 TEST(ExodusMalformed, MissingFileIsNotFound) {
