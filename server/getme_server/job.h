@@ -14,11 +14,11 @@
 #include "getme/smoothing/progress.h"
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
-#include "getme_server/job_directory.h"
 #include "getme_server/job_handle.h"
 #include "getme_server/job_run.h"
 #include "getme_server/job_trace.h"
 #include "getme_server/progress_fanout.h"
+#include "getme_server/result_hold.h"
 #include "getme_server/server_metrics.h"
 #include "getme_wire/mesh_upload.h"
 
@@ -84,7 +84,7 @@ class Job : public JobHandle, public std::enable_shared_from_this<Job> {
   // Drops an unfetched result `ttl` after the job finished; true once the job is final for
   // twice that (the registry then forgets it). A held result neither expires nor is forgotten.
   bool ExpireIfOlderThan(absl::Time now, absl::Duration ttl);
-  // Keeps the result until the returned hold is destroyed (job_directory.h: ResultHold), for the
+  // Keeps the result until the returned hold is destroyed (result_hold.h), for the
   // Smooth call that waits on the job. The hold shares the job (made by std::make_shared).
   ResultHold HoldResult();
 

@@ -1,11 +1,9 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "absl/status/status.h"
@@ -14,6 +12,7 @@
 #include "getme/smoothing/smoothing_params.h"
 #include "getme/v1/smoother.pb.h"
 #include "getme_server/job_handle.h"
+#include "getme_server/result_hold.h"
 #include "getme_wire/mesh_upload.h"
 
 namespace getme::server {
@@ -36,33 +35,6 @@ struct JobSubmission {
   // The call that submits the job waits on it and fetches the result itself (Smooth): see
   // SubmittedJob::result_hold.
   bool submitter_fetches_result = false;
-};
-
-// Keeps a job's result from expiring until it is destroyed (moved-from holds release nothing).
-// Smooth fetches its job's result the moment the job ends, but on a loaded machine that moment can
-// come later than a short --result_ttl after the end; the result must not expire under the call
-// that is about to send it.
-class ResultHold {
- public:
-  ResultHold() = default;
-  explicit ResultHold(std::function<void()> release) : release_(std::move(release)) {}
-  ResultHold(ResultHold&& other) noexcept : release_(std::exchange(other.release_, nullptr)) {}
-  ResultHold& operator=(ResultHold&& other) noexcept {
-    if (this != &other) {
-      Release();
-      release_ = std::exchange(other.release_, nullptr);
-    }
-    return *this;
-  }
-  ResultHold(const ResultHold&) = delete;
-  ResultHold& operator=(const ResultHold&) = delete;
-  ~ResultHold() { Release(); }
-
- private:
-  void Release() {
-    if (release_) std::exchange(release_, nullptr)();
-  }
-  std::function<void()> release_;
 };
 
 // A queued job and a reader of its events from the first one (Smooth forwards them).
