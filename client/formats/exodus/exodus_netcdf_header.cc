@@ -93,14 +93,13 @@ absl::Status Malformed(const HeaderCursor& cursor, absl::string_view what) {
 // on 2026-11-28).
 absl::Status SkipName(HeaderCursor& cursor, absl::string_view what) {
   const std::optional<std::uint64_t> length = cursor.Count();
-  if (length.has_value() && *length > NC_MAX_NAME) {
+  if (!length.has_value()) return Malformed(cursor, absl::StrCat(what, " name"));
+  if (*length > NC_MAX_NAME) {
     return absl::InvalidArgumentError(
         absl::StrCat("netCDF header, byte ", cursor.offset(), ": ", what, " name is ", *length,
                      " bytes long; netCDF names have at most ", NC_MAX_NAME, " (NC_MAX_NAME)"));
   }
-  if (!length.has_value() || !cursor.Skip((*length + 3) / 4 * 4)) {
-    return Malformed(cursor, absl::StrCat(what, " name"));
-  }
+  if (!cursor.Skip((*length + 3) / 4 * 4)) return Malformed(cursor, absl::StrCat(what, " name"));
   return absl::OkStatus();
 }
 
