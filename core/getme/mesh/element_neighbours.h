@@ -22,10 +22,13 @@ class ElementNeighbourFinder {
                                   std::span<const std::uint8_t> through = {});
 
  private:
-  std::vector<std::int32_t> ranks_;  // canonical ranks, one sorted row per node of the element
+  // One sorted row per node of the element: ids where they are canonical ranks, else
+  // rank << 32 | id in keyed_.
   std::vector<std::size_t> row_ends_;
-  std::vector<std::int32_t> merged_;
   std::vector<ElementId> neighbours_;
+  std::vector<ElementId> merged_;
+  std::vector<std::uint64_t> keyed_;
+  std::vector<std::uint64_t> keyed_merged_;
 };
 
 }  // namespace getme

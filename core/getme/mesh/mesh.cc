@@ -244,10 +244,18 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
     const ElementBlock& block = mesh.blocks_[TypeIndex(type)];
     mesh.corner_offset_[TypeIndex(type)] = corners;
     corners += static_cast<std::int64_t>(block.nodes.size());
-    mesh.block_rank_offset_[TypeIndex(type)] =
-        static_cast<std::int64_t>(mesh.canonical_order_.size());
     mesh.canonical_order_.insert(mesh.canonical_order_.end(), block.elements.begin(),
                                  block.elements.end());
+  }
+  bool identity = true;
+  for (std::int64_t rank = 0; rank < element_count && identity; ++rank) {
+    identity = mesh.canonical_order_[rank] == rank;
+  }
+  if (!identity) {
+    mesh.canonical_rank_.resize(element_count);
+    for (std::int64_t rank = 0; rank < element_count; ++rank) {
+      mesh.canonical_rank_[mesh.canonical_order_[rank]] = static_cast<std::int32_t>(rank);
+    }
   }
   mesh.corner_offset_[kElementTypeCount] = corners;
 
