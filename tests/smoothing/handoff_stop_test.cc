@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/hybrid_block.h"
+#include "getme/parallel/thread_pool.h"
 #include "getme/smoothing/smoother.h"
 
 namespace getme {
@@ -123,6 +125,50 @@ TEST_P(SequentialHandOnTest, StopsOneWindowAfterTheLastRiseOfTheBestMinimum) {
   params.sequential_cycle = 1000;
   const RecordedRun paper = SmoothRecording(params);
   EXPECT_GT(paper.result.iterations_sequential, run.result.iterations_sequential);
+}
+
+// Once the mesh's minimum is an element with no movable node, no pick can give a new best state,
+// and the state handed on is the last best one: the substep stops at that pick instead of running
+// a window of picks that would all be undone.
+TEST(SequentialPinnedMinimumTest, StopsAtThePickThatReachesTheWorstUnmovableElement) {
+  // Pin an element of middling quality: GETMe's substeps leave worse ones at first, and the
+  // sequential substep lifts them to it.
+  Mesh mesh = TestMesh();
+  ThreadPool pool(1);
+  const std::vector<double> quality = ComputeElementQualities(mesh, pool);
+  ElementId pinned_element = -1;
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    if (quality[e] >= 0.4 && (pinned_element < 0 || quality[e] < quality[pinned_element])) {
+      pinned_element = e;
+    }
+  }
+  ASSERT_GE(pinned_element, 0);
+  for (NodeId node : mesh.element_nodes(pinned_element)) mesh.set_fixed(node, true);
+  const double pinned = quality[pinned_element];
+
+  SmoothingParams params;
+  params.threads = 2;
+  params.sequential_cycle = 1;
+  std::vector<ProgressEvent> sequential;
+  auto result = Smooth(mesh, params, [&](const ProgressEvent& event) {
+    if (!event.phase_done && event.phase == Phase::kSequential) sequential.push_back(event);
+  });
+  ASSERT_TRUE(result.ok()) << result.status();
+  ASSERT_GE(result->phases.size(), 2u);
+  ASSERT_LT(result->phases[0].q_min, pinned) << "the simultaneous substep leaves a worse element";
+  // The first pick after which the mesh's minimum is the pinned element's quality.
+  std::int64_t reached = -1;
+  for (const ProgressEvent& event : sequential) {
+    if (event.q_min >= pinned) {
+      reached = event.iteration;
+      break;
+    }
+  }
+  ASSERT_GT(reached, 0);
+  EXPECT_EQ(result->iterations_sequential, reached);
+  EXPECT_LT(result->iterations_sequential, 1000) << "before any window could end";
+  EXPECT_EQ(result->phases[1].q_min, pinned);
+  EXPECT_EQ(result->after.q_min, pinned) << "nothing after the substep moves it either";
 }
 
 INSTANTIATE_TEST_SUITE_P(OneAtATimeAndBatches, SequentialHandOnTest, ::testing::Values(1, 64),

@@ -18,11 +18,15 @@ enum class SequentialStop {
   // The rule of --method sequential, the warpage variant and GETMe without the polish.
   kStalledWindow,
   // Beyond the paper (issue 14, item 2), when the polish follows: stop as soon as the last
-  // sequential_handoff_window picks (0: max(1000, elements / 4)) raised the best minimum by less
-  // than sequential_improvement_tolerance, a sliding window. It stops one window after the rise
-  // ends instead of one to two mesh-sized windows later (docs/quality.md has the measured trade).
+  // sequential_handoff_window picks (0: max(1000, min(elements / 4, 8 × distinct elements picked
+  // so far))) raised the best minimum by less than sequential_improvement_tolerance, a sliding
+  // window. It stops one window after the rise ends instead of one to two mesh-sized windows
+  // later, and the window is counted in rounds over the elements the picks work on, not in mesh
+  // sizes (docs/quality.md has the measured trade).
   kHandOnToPolish,
 };
+// Either rule also stops as soon as the minimum is the quality of an element with no movable
+// node: no pick can then give a new best state, so the state handed on is the same.
 
 // GETMe sequential (Sec. 3.2): repeatedly transform the element with the lowest corrected quality
 // q + π in place (a min-heap of the lowest keys, with key updates), revert it if a neighbour

@@ -66,7 +66,8 @@ struct SmoothingParams {
   std::int64_t sequential_max_iterations = 0;
   double sequential_improvement_tolerance = 1e-3;
   // With the polish on (SequentialStop::kHandOnToPolish): stop once the last this many picks
-  // (0: max(1000, elements / 4)) raised the best q_min by less than the tolerance above.
+  // (0: max(1000, min(elements / 4, 8 × distinct elements picked so far))) raised the best q_min
+  // by less than the tolerance above.
   std::int64_t sequential_handoff_window = 0;
   // Safeguard (docs/quality.md): a step that would make a neighbour invalid is retried at half
   // its length up to this many times before it counts as reverted (Step 3.1). 0 = the paper.
