@@ -46,6 +46,10 @@ TEST(MixedTopology, PrismCubeNeighboursAndNodeElements) {
             (std::vector<ElementId>{1, 3, 0, 2}));
   EXPECT_EQ(mesh.canonical_rank(0), 2);
   EXPECT_EQ(mesh.canonical_rank(3), 1);
+  EXPECT_FALSE(mesh.ids_in_canonical_order());
+  for (std::int32_t rank = 0; rank < 4; ++rank) {
+    EXPECT_EQ(mesh.canonical_rank(mesh.canonical_order()[rank]), rank);
+  }
   const auto node_elements = mesh.node_elements(2);
   EXPECT_EQ(std::vector<ElementId>(node_elements.begin(), node_elements.end()),
             (std::vector<ElementId>{1, 3, 0, 2}));
@@ -56,6 +60,24 @@ TEST(MixedTopology, PrismCubeNeighboursAndNodeElements) {
   const auto tet_neighbours = mesh.element_neighbours(1);
   EXPECT_EQ(std::vector<ElementId>(tet_neighbours.begin(), tet_neighbours.end()),
             (std::vector<ElementId>{3, 0, 2}));
+}
+
+// Ids added type by type in the canonical order are their own ranks, and the mesh says so (the
+// neighbour finder then reads no rank table).
+TEST(MixedTopology, IdsAddedInCanonicalOrderAreTheirRanks) {
+  const MeshSpec interleaved = PrismCubeWithPyramidAndTet();
+  MeshSpec grouped;
+  for (std::size_t n = 0; n < interleaved.nodes.size(); ++n) grouped.AddNode(interleaved.nodes[n]);
+  for (ElementId e : {1, 3, 0, 2}) {
+    grouped.AddElement(interleaved.elements[e].type, interleaved.elements[e].nodes);
+  }
+  const Mesh mesh = BuildMixedOrDie(grouped);
+  EXPECT_TRUE(mesh.ids_in_canonical_order());
+  for (ElementId e = 0; e < 4; ++e) {
+    EXPECT_EQ(mesh.canonical_order()[e], e);
+    EXPECT_EQ(mesh.canonical_rank(e), e);
+  }
+  ExpectTopologyMatchesReference(mesh, grouped);
 }
 
 // A tetrahedron resting on three of the four nodes of prism 0's y = 0 quad face: its triangle
