@@ -451,6 +451,21 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring,
   return !cancelled;
 }
 
+// The lowest quality among elements with no movable node (+∞ if every element has one): no step
+// of the polish changes them, so the mesh's q_min cannot rise above it.
+double PinnedMinimum(const SmoothingContext& context) {
+  const Mesh& mesh = context.mesh;
+  double pinned = std::numeric_limits<double>::infinity();
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    const std::span<const NodeId> nodes = mesh.element_nodes(e);
+    if (std::none_of(nodes.begin(), nodes.end(),
+                     [&](NodeId node) { return context.movable[node] != 0; })) {
+      pinned = std::min(pinned, context.quality[e]);
+    }
+  }
+  return pinned;
+}
+
 }  // namespace
 
 absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
@@ -467,8 +482,10 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
   PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
   bool finished = true;
   // Worst elements first: the mean stage cannot lower q_min, so whatever q_min the polish is to
-  // reach must come before it.
-  if (params.polish_worst_exponent > 1.0 && params.polish_worst_max_sweeps > 0) {
+  // reach must come before it. Not where q_min is already the quality of an element with no
+  // movable node: no step can raise it then, and the stage that serves q_min has nothing to do.
+  if (params.polish_worst_exponent > 1.0 && params.polish_worst_max_sweeps > 0 &&
+      current.q_min < PinnedMinimum(context)) {
     state.exponent = params.polish_worst_exponent;
     state.q_floor = 0.0;
     const CompressedRows final_after_colour = ElementsByLastColour(mesh, colouring);
