@@ -10,10 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/hybrid_block.h"
-#include "getme/parallel/thread_pool.h"
 #include "getme/smoothing/smoother.h"
+#include "smoothing_test_support.h"
 
 namespace getme {
 namespace {
@@ -134,17 +133,8 @@ TEST(SequentialPinnedMinimumTest, StopsAtThePickThatReachesTheWorstUnmovableElem
   // Pin an element of middling quality: GETMe's substeps leave worse ones at first, and the
   // sequential substep lifts them to it.
   Mesh mesh = TestMesh();
-  ThreadPool pool(1);
-  const std::vector<double> quality = ComputeElementQualities(mesh, pool);
-  ElementId pinned_element = -1;
-  for (ElementId e = 0; e < mesh.element_count(); ++e) {
-    if (quality[e] >= 0.4 && (pinned_element < 0 || quality[e] < quality[pinned_element])) {
-      pinned_element = e;
-    }
-  }
-  ASSERT_GE(pinned_element, 0);
-  for (NodeId node : mesh.element_nodes(pinned_element)) mesh.set_fixed(node, true);
-  const double pinned = quality[pinned_element];
+  const double pinned = testing::PinElementOfQualityAtLeast(mesh, 0.4);
+  ASSERT_GT(pinned, 0.0);
 
   SmoothingParams params;
   params.threads = 2;

@@ -8,14 +8,11 @@
 
 #include <functional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "absl/status/statusor.h"
-#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/distorted_hex_block.h"
 #include "getme/meshgen/hybrid_block.h"
-#include "getme/parallel/thread_pool.h"
 #include "getme/smoothing/smoother.h"
 #include "smoothing_test_support.h"
 
@@ -120,33 +117,24 @@ TEST(PolishTest, WorstElementStageIsSkippedWhereTheMinimumIsPinned) {
   // it, so the polish starts with q_min equal to that element's quality, which no step can change.
   // The worst-element stage, whose goal is q_min, must not run: the run equals a run without the
   // stage in every coordinate and in its sweep count.
-  auto make = [] {
-    auto mesh = meshgen::HybridBlock(8, 8, 6, 0.3, 31);
-    EXPECT_TRUE(mesh.ok()) << mesh.status();
-    ThreadPool pool(1);
-    const std::vector<double> quality = ComputeElementQualities(*mesh, pool);
-    ElementId pinned = -1;
-    for (ElementId e = 0; e < mesh->element_count(); ++e) {
-      if (quality[e] >= 0.4 && (pinned < 0 || quality[e] < quality[pinned])) pinned = e;
-    }
-    for (NodeId node : mesh->element_nodes(pinned)) mesh->set_fixed(node, true);
-    return std::make_pair(std::move(*mesh), quality[pinned]);
-  };
-  auto [with_stage, pinned_quality] = make();
-  auto [without_stage, unused] = make();
+  auto with_stage = meshgen::HybridBlock(8, 8, 6, 0.3, 31);
+  auto without_stage = meshgen::HybridBlock(8, 8, 6, 0.3, 31);
+  ASSERT_TRUE(with_stage.ok() && without_stage.ok());
+  const double pinned_quality = testing::PinElementOfQualityAtLeast(*with_stage, 0.4);
+  ASSERT_EQ(testing::PinElementOfQualityAtLeast(*without_stage, 0.4), pinned_quality);
   SmoothingParams params;
   params.threads = 2;
-  auto result = Smooth(with_stage, params);
+  auto result = Smooth(*with_stage, params);
   ASSERT_TRUE(result.ok()) << result.status();
   ASSERT_GE(result->phases.size(), 3u);
   ASSERT_EQ(result->phases[1].q_min, pinned_quality) << "the polish starts at the pinned minimum";
 
   params.polish_worst_exponent = 0.0;
-  auto plain = Smooth(without_stage, params);
+  auto plain = Smooth(*without_stage, params);
   ASSERT_TRUE(plain.ok()) << plain.status();
   EXPECT_EQ(result->iterations_polish, plain->iterations_polish);
-  EXPECT_TRUE(testing::CoordinateSnapshot(with_stage) ==
-              testing::CoordinateSnapshot(without_stage));
+  EXPECT_TRUE(testing::CoordinateSnapshot(*with_stage) ==
+              testing::CoordinateSnapshot(*without_stage));
   EXPECT_EQ(result->after.q_min, pinned_quality);
 }
 

@@ -5,8 +5,10 @@
 #include "formats/grid_mesh.h"
 #include "formats/vtk_reader.h"
 #include "getme/elements/element_quality.h"
+#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/distorted_hex_block.h"
 #include "getme/meshgen/hybrid_block.h"
+#include "getme/parallel/thread_pool.h"
 
 namespace getme::testing {
 
@@ -102,6 +104,19 @@ std::vector<NamedMesh> DistortedBlocks(int n, std::initializer_list<std::uint64_
 
 void FixSomeInteriorNodes(Mesh& mesh) {
   for (NodeId node = 0; node < mesh.node_count(); node += 7) mesh.set_fixed(node, true);
+}
+
+double PinElementOfQualityAtLeast(Mesh& mesh, double at_least) {
+  ThreadPool pool(1);
+  const std::vector<double> quality = ComputeElementQualities(mesh, pool);
+  ElementId pinned = -1;
+  for (ElementId e = 0; e < mesh.element_count(); ++e) {
+    if (quality[e] >= at_least && (pinned < 0 || quality[e] < quality[pinned])) pinned = e;
+  }
+  EXPECT_GE(pinned, 0) << "no element of quality at least " << at_least;
+  if (pinned < 0) return -1.0;
+  for (NodeId node : mesh.element_nodes(pinned)) mesh.set_fixed(node, true);
+  return quality[pinned];
 }
 
 }  // namespace getme::testing

@@ -46,6 +46,10 @@ std::vector<NodeId> ImmovableNodes(const Mesh& mesh, const SmoothingParams& para
 void ExpectUnmoved(const CoordinateSnapshot& before, const Mesh& mesh,
                    const std::vector<NodeId>& nodes);
 
+// Fixes every node of the element of lowest mean ratio among those of at least `at_least` and
+// returns that quality: a minimum no smoother can move, which GETMe lifts the worse elements to.
+double PinElementOfQualityAtLeast(Mesh& mesh, double at_least);
+
 // Invalid elements recounted from scratch with the Def. 2 kernel.
 std::int64_t CountInvalid(const Mesh& mesh);
 

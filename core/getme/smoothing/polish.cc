@@ -457,11 +457,7 @@ double PinnedMinimum(const SmoothingContext& context) {
   const Mesh& mesh = context.mesh;
   double pinned = std::numeric_limits<double>::infinity();
   for (ElementId e = 0; e < mesh.element_count(); ++e) {
-    const std::span<const NodeId> nodes = mesh.element_nodes(e);
-    if (std::none_of(nodes.begin(), nodes.end(),
-                     [&](NodeId node) { return context.movable[node] != 0; })) {
-      pinned = std::min(pinned, context.quality[e]);
-    }
+    if (!context.HasMovableNode(e)) pinned = std::min(pinned, context.quality[e]);
   }
   return pinned;
 }

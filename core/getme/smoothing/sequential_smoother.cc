@@ -85,7 +85,6 @@ class SequentialSubstep {
 
  private:
   double Criterion(ElementId element, double quality) const;
-  bool HasMovableNode(ElementId element) const;
   // Picks per batch: at most sequential_batch, and one per sequential_batch_elements elements;
   // where that is fewer than kMinimumBatch, one pick at a time.
   static std::int64_t BatchLimit(const SmoothingParams& params, const Mesh& mesh) {
@@ -170,13 +169,6 @@ double SequentialSubstep::Criterion(ElementId element, double quality) const {
     return Warpage<kType>(GatherNodes<kType>(mesh_, ids));
   });
   return std::min(q, params_.gamma * (1.0 - warpage / 2.0));
-}
-
-bool SequentialSubstep::HasMovableNode(ElementId element) const {
-  for (NodeId node : mesh_.element_nodes(element)) {
-    if (context_.movable[node]) return true;
-  }
-  return false;
 }
 
 void SequentialSubstep::FindAffected(PickWork& work) {
@@ -423,7 +415,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
     if (criterion_ != SelectionCriterion::kMeanRatio) {
       criterion_min_.Insert(element, criterion_value_[element]);
     }
-    if (HasMovableNode(element)) {
+    if (context_.HasMovableNode(element)) {
       selection_.Insert(mesh_.canonical_rank(element), criterion_value_[element]);
     } else {
       pinned_min = std::min(pinned_min, criterion_value_[element]);

@@ -58,6 +58,14 @@ struct SmoothingContext {
   Vec3 Placed(NodeId node, const Vec3& point, const Vec3& from) const {
     return sliding[node] ? slide->Project(node, point, &from) : point;
   }
+  // Whether any node of the element is movable: elements without one keep their quality through
+  // every phase.
+  bool HasMovableNode(ElementId element) const {
+    for (NodeId node : mesh.element_nodes(element)) {
+      if (movable[node]) return true;
+    }
+    return false;
+  }
   bool Cancelled() const { return cancel != nullptr && cancel->cancelled(); }
   void Report(const ProgressEvent& event) const {
     if (progress) progress(event);
