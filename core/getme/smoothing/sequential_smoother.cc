@@ -120,12 +120,10 @@ class SequentialSubstep {
   std::int64_t FinishBatch();
   void RestoreBest();
   // The sliding window in rounds over the elements the substep works on rather than in mesh
-  // sizes: at least 1000 picks, or kActiveRounds picks per distinct element picked so far
-  // (SequentialStop::kHandOnToPolish).
-  std::int64_t ActiveWindow() const {
-    return params_.sequential_handoff_window > 0
-               ? params_.sequential_handoff_window
-               : std::max<std::int64_t>(kMinimumWindow, kActiveRounds * picked_elements_);
+  // sizes: kActiveRounds picks per distinct element picked so far, at least kMinimumWindow
+  // (SequentialStop::kHandOnToPolish, unless sequential_handoff_window sets the window).
+  std::int64_t RoundsWindow() const {
+    return std::max<std::int64_t>(kMinimumWindow, kActiveRounds * picked_elements_);
   }
 
   SmoothingContext& context_;
@@ -401,6 +399,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
                                       : (params_.sequential_stall_iterations > 0
                                              ? params_.sequential_stall_iterations
                                              : std::max<std::int64_t>(kMinimumWindow, elements));
+  const bool window_in_rounds = sliding && params_.sequential_handoff_window == 0;
   const std::int64_t cap =
       params_.sequential_max_iterations > 0 ? params_.sequential_max_iterations : 50 * elements;
 
@@ -464,7 +463,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
         risen_min = best_min;
         risen_pick = pick;
       }
-      stalled = pick - risen_pick >= std::min(window, ActiveWindow());
+      stalled = pick - risen_pick >= (window_in_rounds ? std::min(window, RoundsWindow()) : window);
     } else if (pick - window_start >= window) {
       stalled = best_min - window_start_min < params_.sequential_improvement_tolerance;
       window_start_min = best_min;
