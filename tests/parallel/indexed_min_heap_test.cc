@@ -131,6 +131,41 @@ TEST(IndexedMinHeap, VisitInKeyOrderStopsWhenAskedAndLeavesTheHeapAlone) {
   });
 }
 
+// A walk stopped and continued, in pieces of any length, visits what one walk visits, each item
+// once: the item at which a piece stops is the first of the next.
+TEST(IndexedMinHeap, ContinueInKeyOrderGoesOnWhereTheWalkStopped) {
+  std::mt19937 random(99);
+  IndexedMinHeap heap(500);
+  for (std::int32_t item = 0; item < 500; ++item) heap.Push(item, RandomKey(random));
+  std::vector<std::pair<double, std::int32_t>> whole;
+  std::vector<std::size_t> frontier;
+  heap.VisitInKeyOrder(frontier, [&](std::int32_t item, double key) {
+    whole.push_back({key, item});
+    return true;
+  });
+  ASSERT_EQ(whole.size(), 500u);
+  for (int piece : {1, 2, 7, 64, 499, 500, 1000}) {
+    std::vector<std::pair<double, std::int32_t>> pieces;
+    std::size_t until = 0;
+    const auto visit = [&](std::int32_t item, double key) {
+      if (pieces.size() == until) return false;
+      pieces.push_back({key, item});
+      return true;
+    };
+    until = piece;
+    heap.VisitInKeyOrder(frontier, visit);
+    while (pieces.size() == until) {
+      until += piece;
+      heap.ContinueInKeyOrder(frontier, visit);
+    }
+    EXPECT_EQ(pieces, whole) << "pieces of " << piece;
+  }
+  // A walk that has ended stays ended.
+  bool called = false;
+  heap.ContinueInKeyOrder(frontier, [&](std::int32_t, double) { return called = true; });
+  EXPECT_FALSE(called);
+}
+
 TEST(IndexedMinHeap, DecreasingAKeyToATieWithTheTopPrefersTheSmallerId) {
   IndexedMinHeap heap(4);
   heap.Push(2, 0.1);

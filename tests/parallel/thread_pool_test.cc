@@ -1,5 +1,7 @@
 // ThreadPool::ParallelFor calls the body on consecutive ranges of at most `grain` indices that
-// cover [0, n) exactly once, for any thread count, and a pool can be reused indefinitely.
+// cover [0, n) exactly once, for any thread count, and a pool can be reused indefinitely;
+// ForEachThread calls it once per thread, number 0 on the caller and each other number on the
+// same worker every time, also when the two kinds of call alternate.
 
 #include "getme/parallel/thread_pool.h"
 
@@ -159,11 +161,81 @@ TEST(ThreadPool, SeparatePoolsRunConcurrentlyFromDifferentThreads) {
   });
 }
 
+TEST(ThreadPool, ForEachThreadRunsEachNumberOnceAndAlwaysOnTheSameThread) {
+  RunWithWatchdog("ForEachThread between ParallelFor calls", [] {
+    for (int threads : {1, 2, 3, 8}) {
+      ThreadPool pool(threads);
+      std::vector<std::thread::id> first_seen(threads);
+      for (int round = 0; round < 300; ++round) {
+        std::vector<std::atomic<int>> calls(threads);
+        std::vector<std::thread::id> seen(threads);
+        pool.ForEachThread([&](int thread) {
+          ASSERT_GE(thread, 0);
+          ASSERT_LT(thread, threads);
+          calls[thread].fetch_add(1, std::memory_order_relaxed);
+          seen[thread] = std::this_thread::get_id();  // one writer per number
+        });
+        ASSERT_EQ(seen[0], std::this_thread::get_id()) << "threads " << threads;
+        for (int thread = 0; thread < threads; ++thread) {
+          ASSERT_EQ(calls[thread].load(), 1) << "thread " << thread << " round " << round;
+          if (round == 0) first_seen[thread] = seen[thread];
+          ASSERT_EQ(seen[thread], first_seen[thread]) << "thread " << thread << " round " << round;
+        }
+        ASSERT_EQ(std::set<std::thread::id>(seen.begin(), seen.end()).size(),
+                  static_cast<std::size_t>(threads));
+        // A ParallelFor in between, whose late workers must not take the next call's numbers.
+        if (round % 2 == 0) ExpectExactCover(pool, 1 + round % 50, 1);
+      }
+    }
+  });
+}
+
+// The sequential substep's way of using it: the caller consumes in order what every thread
+// produces, the others stopping once the caller has enough.
+TEST(ThreadPool, ForEachThreadLetsTheCallerWaitForTheOthers) {
+  RunWithWatchdog("a producer and consumer round", [] {
+    ThreadPool pool(3);
+    for (int round = 0; round < 200; ++round) {
+      constexpr int kItems = 64;
+      std::vector<int> value(kItems, 0);
+      std::vector<std::uint8_t> ready(kItems, 0);
+      std::atomic<int> next{0};
+      std::atomic<bool> enough{false};
+      int consumed_sum = 0;
+      const int wanted = 1 + round % kItems;
+      const auto produce = [&] {
+        const int i = next.fetch_add(1);
+        if (i >= kItems) return false;
+        value[i] = i * i;
+        std::atomic_ref(ready[i]).store(1, std::memory_order_release);
+        return true;
+      };
+      pool.ForEachThread([&](int thread) {
+        if (thread != 0) {
+          while (!enough.load() && produce()) {
+          }
+          return;
+        }
+        for (int i = 0; i < wanted;) {
+          if (std::atomic_ref(ready[i]).load(std::memory_order_acquire)) {
+            consumed_sum += value[i++];
+          } else if (!produce()) {
+            SpinPause();
+          }
+        }
+        enough.store(true);
+      });
+      ASSERT_EQ(consumed_sum, (wanted - 1) * wanted * (2 * wanted - 1) / 6) << "round " << round;
+    }
+  });
+}
+
 TEST(ThreadPool, DestroyingAnIdlePoolJoinsItsWorkers) {
   RunWithWatchdog("creating and destroying pools", [] {
     for (int i = 0; i < 200; ++i) {
       ThreadPool pool(1 + i % 8);
       if (i % 2 == 0) pool.ParallelFor(100, 1, [](std::int64_t, std::int64_t) {});
+      if (i % 3 == 0) pool.ForEachThread([](int) {});
     }
   });
 }

@@ -36,13 +36,21 @@ class IndexedMinHeap {
   void VisitInKeyOrder(std::vector<std::size_t>& frontier, Visit&& visit) const {
     frontier.clear();
     if (heap_.empty()) return;
-    const auto later = [this](std::size_t a, std::size_t b) { return heap_[b] < heap_[a]; };
     frontier.push_back(0);
+    ContinueInKeyOrder(frontier, visit);
+  }
+
+  // Goes on with a walk that VisitInKeyOrder (or this) stopped, from the item at which visit
+  // returned false: that item is visited again. The heap must not have changed in between. So a
+  // caller can walk only as deep as it turns out to need (the sequential substep's batches).
+  template <typename Visit>
+  void ContinueInKeyOrder(std::vector<std::size_t>& frontier, Visit&& visit) const {
+    const auto later = [this](std::size_t a, std::size_t b) { return heap_[b] < heap_[a]; };
     while (!frontier.empty()) {
-      std::pop_heap(frontier.begin(), frontier.end(), later);
-      const std::size_t at = frontier.back();
-      frontier.pop_back();
+      const std::size_t at = frontier.front();
       if (!visit(heap_[at].item, heap_[at].key)) return;
+      std::pop_heap(frontier.begin(), frontier.end(), later);
+      frontier.pop_back();
       for (std::size_t child = 2 * at + 1; child <= 2 * at + 2 && child < heap_.size(); ++child) {
         frontier.push_back(child);
         std::push_heap(frontier.begin(), frontier.end(), later);

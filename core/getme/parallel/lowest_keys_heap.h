@@ -84,6 +84,11 @@ class LowestKeysHeap {
     Restock();
     heap_.VisitInKeyOrder(frontier, visit);
   }
+  // As IndexedMinHeap::ContinueInKeyOrder: no update may come between the two calls.
+  template <typename Visit>
+  void ContinueInKeyOrder(std::vector<std::size_t>& frontier, Visit&& visit) {
+    heap_.ContinueInKeyOrder(frontier, visit);
+  }
 
  private:
   void Restock() {

@@ -11,6 +11,15 @@
 
 namespace getme {
 
+// Tells the core that this is a spin loop, so a sibling hardware thread gets its resources.
+inline void SpinPause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
 // A fixed set of worker threads running ParallelFor over statically partitioned chunks.
 //
 // Why not TBB or OpenMP: results must be bit-identical for any thread count, which the engine
@@ -34,15 +43,24 @@ class ThreadPool {
   void ParallelFor(std::int64_t count, std::int64_t grain,
                    const std::function<void(std::int64_t, std::int64_t)>& body);
 
+  // Calls body(thread) once on every thread, thread 0 being the caller and 1..thread_count()-1
+  // the workers, always the same worker for the same number, and returns when all are done. For
+  // work whose data should stay in one core's cache from call to call (the sequential substep's
+  // heaps: docs/parallel-sequential.md); ParallelFor hands chunks to whichever thread is free.
+  void ForEachThread(const std::function<void(int)>& body);
+
  private:
-  void WorkerLoop();
+  void WorkerLoop(int thread);
   void RunChunks();
+  // Until no chunk or thread body is running: spins for kSpin, then sleeps.
+  void WaitForRunning();
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable work_ready_;
   std::condition_variable work_done_;
   const std::function<void(std::int64_t, std::int64_t)>* body_ = nullptr;
+  const std::function<void(int)>* thread_body_ = nullptr;  // ForEachThread's; guarded by mutex_
   std::int64_t count_ = 0;
   std::int64_t grain_ = 1;
   std::int64_t next_chunk_ = 0;  // guarded by mutex_
