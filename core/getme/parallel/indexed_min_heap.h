@@ -18,6 +18,8 @@ class IndexedMinHeap {
   bool empty() const { return heap_.empty(); }
   std::int64_t size() const { return static_cast<std::int64_t>(heap_.size()); }
   bool contains(std::int32_t item) const { return position_[item] != kAbsent; }
+  // Asks for the cache line contains(item) reads.
+  void Prefetch(std::int32_t item) const { __builtin_prefetch(&position_[item]); }
   std::int32_t top() const { return heap_.front().item; }
   double top_key() const { return heap_.front().key; }
   double key(std::int32_t item) const { return heap_[position_[item]].key; }

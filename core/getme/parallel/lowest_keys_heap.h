@@ -45,6 +45,13 @@ class LowestKeysHeap {
   bool empty() const { return size_ == 0; }
   std::int64_t size() const { return size_; }
   bool contains(std::int32_t item) const { return present_[item] != 0; }
+  // Asks for the cache lines an update of the item reads and writes (UpdateOutsideHeap).
+  void Prefetch(std::int32_t item) const {
+    __builtin_prefetch(&key_[item], 1);
+    heap_.Prefetch(item);
+  }
+  // Asks for the cache line contains(item) reads.
+  void PrefetchContains(std::int32_t item) const { __builtin_prefetch(&present_[item]); }
 
   void Update(std::int32_t item, double key) {
     key_[item] = key;

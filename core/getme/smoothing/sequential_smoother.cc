@@ -355,6 +355,16 @@ void SequentialSubstep::ChooseBatch() {
 
 void SequentialSubstep::RunPick(PickWork& work) {
   const ElementId pick = work.element;
+  // The elements around a pick lie anywhere in a large mesh, and each has its state in several
+  // arrays: ask for all of it now, so the cache misses overlap each other and the transform
+  // instead of coming one after another in the loops below.
+  for (ElementId element : work.affected) {
+    mesh_.PrefetchElement(element);
+    __builtin_prefetch(&context_.quality[element], 1);
+    __builtin_prefetch(&criterion_value_[element], 1);
+    __builtin_prefetch(&penalty_[element]);
+    quality_min_.Prefetch(element);
+  }
   // Steps 1.2, 1.3 and 2: transform with the fixed σ^type, scale, relax, set the free nodes.
   auto x = mesh_.x();
   auto y = mesh_.y();
@@ -382,6 +392,11 @@ void SequentialSubstep::RunPick(PickWork& work) {
   // they are not evaluated.
   work.affected_quality.resize(work.affected.size());
   context_.NodeListsOf(work.affected, work.node_lists);
+  for (ElementId element : work.affected) {  // the selection's state, by rank (above)
+    const std::int32_t rank = mesh_.canonical_rank(element);
+    selection_.PrefetchContains(rank);
+    selection_.Prefetch(rank);
+  }
   bool valid = false;
   double fraction = 1.0;
   for (int attempt = 0; attempt <= params_.sequential_backtracking_steps && !valid;
