@@ -37,19 +37,27 @@ std::span<const ElementId> ElementNeighbourFinder::Find(const Mesh& mesh, Elemen
   // entry is keyed by rank above id, so the merged keys give the ids back without a second
   // random read per neighbour (canonical_order()[rank]); the neighbours are cache misses, and
   // those reads were a quarter of the sequential substep on a 1M-element hybrid mesh.
+  //
+  // The rows and the ranks lie anywhere in a large mesh, so each is asked for before it is read
+  // (the rows' bounds, then every entry's rank while the rows are read), and the cache misses
+  // overlap instead of coming one after another.
   const bool ids_are_ranks = mesh.ids_in_canonical_order();
   neighbours_.clear();
   keyed_.clear();
   row_ends_.clear();
-  for (NodeId node : mesh.element_nodes(element)) {
+  const std::span<const NodeId> nodes = mesh.element_nodes(element);
+  for (NodeId node : nodes) {
+    if (through.empty() || through[node]) mesh.PrefetchNodeElements(node);
+  }
+  for (NodeId node : nodes) {
     if (!through.empty() && !through[node]) continue;
     for (ElementId other : mesh.node_elements(node)) {
       if (other == element) continue;
       if (ids_are_ranks) {
         neighbours_.push_back(other);
       } else {
-        keyed_.push_back(static_cast<std::uint64_t>(mesh.canonical_rank(other)) << 32 |
-                         static_cast<std::uint32_t>(other));
+        mesh.PrefetchCanonicalRank(other);
+        keyed_.push_back(static_cast<std::uint32_t>(other));
       }
     }
     row_ends_.push_back(ids_are_ranks ? neighbours_.size() : keyed_.size());
@@ -58,6 +66,9 @@ std::span<const ElementId> ElementNeighbourFinder::Find(const Mesh& mesh, Elemen
   if (ids_are_ranks) {
     MergeRuns(neighbours_, row_ends_, merged_);
     return neighbours_;
+  }
+  for (std::uint64_t& key : keyed_) {
+    key |= static_cast<std::uint64_t>(mesh.canonical_rank(static_cast<ElementId>(key))) << 32;
   }
   MergeRuns(keyed_, row_ends_, keyed_merged_);
   neighbours_.resize(keyed_.size());

@@ -114,6 +114,14 @@ class Mesh {
     __builtin_prefetch(&block_index_[element]);
     if (!canonical_rank_.empty()) __builtin_prefetch(&canonical_rank_[element]);
   }
+  // Asks for the cache line canonical_rank(element) reads.
+  void PrefetchCanonicalRank(ElementId element) const {
+    if (!canonical_rank_.empty()) __builtin_prefetch(&canonical_rank_[element]);
+  }
+  // Asks for the cache lines node_elements(node) reads first: the row's bounds and its start.
+  void PrefetchNodeElements(NodeId node) const {
+    __builtin_prefetch(&node_elements_.offsets[node]);
+  }
   // Whether canonical_order() is 0, 1, 2, ...: then an element's id is its rank.
   bool ids_in_canonical_order() const { return canonical_rank_.empty(); }
   // Elements containing the node, in canonical order.

@@ -477,16 +477,30 @@ std::int64_t SequentialSubstep::FinishPick(PickWork& work) {
 std::int64_t SequentialSubstep::FinishBatch() {
   // The selection heap on one thread, the rest on another: each in batch order, so the outcome is
   // the same as one thread doing both. The selection heap takes about half of this serial step.
+  // Each side asks for the heap entries of the next pick's updates while it applies this pick's:
+  // they are scattered over arrays of the mesh's size.
+  const auto prefetch_updates = [&](std::size_t at, bool of_selection) {
+    if (at >= picks_.size()) return;
+    for (const HeapUpdate& update : work_[picks_[at]].heap_updates) {
+      if ((update.heap == &selection_) == of_selection) update.heap->Prefetch(update.item);
+    }
+  };
   std::int64_t reverts = 0;
   auto update_selection = [&] {
-    for (std::int64_t i : picks_) {
-      for (const HeapUpdate& update : work_[i].heap_updates) {
+    prefetch_updates(0, true);
+    for (std::size_t at = 0; at < picks_.size(); ++at) {
+      prefetch_updates(at + 1, true);
+      for (const HeapUpdate& update : work_[picks_[at]].heap_updates) {
         if (update.heap == &selection_) selection_.Update(update.item, update.key);
       }
     }
   };
   auto finish_the_rest = [&] {
-    for (std::int64_t i : picks_) reverts += FinishPick(work_[i]);
+    prefetch_updates(0, false);
+    for (std::size_t at = 0; at < picks_.size(); ++at) {
+      prefetch_updates(at + 1, false);
+      reverts += FinishPick(work_[picks_[at]]);
+    }
   };
   if (picks_.size() == 1 || context_.pool.thread_count() == 1) {
     update_selection();
