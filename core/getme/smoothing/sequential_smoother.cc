@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <limits>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -279,12 +280,20 @@ void SequentialSubstep::FindAndClaim(std::int64_t begin, std::int64_t end) {
       }
       return;
     }
+    int waits = 0;
     for (std::int64_t i = begin; i < end && picks_.size() < limit;) {
       if (std::atomic_ref(found_[i]).load(std::memory_order_acquire)) {
         if (TryClaim(work_[i])) picks_.push_back(i);
         ++i;
       } else if (!find_next()) {
-        SpinPause();  // another thread is finding candidate i
+        // Another thread is finding candidate i: a few microseconds, unless the system runs more
+        // threads than cores (the server's jobs side by side) and that one is not running, when
+        // the core is handed over.
+        if (++waits % 1024 == 0) {
+          std::this_thread::yield();
+        } else {
+          SpinPause();
+        }
       }
     }
     full.store(true, std::memory_order_relaxed);
