@@ -118,7 +118,8 @@ class Mesh {
   void PrefetchCanonicalRank(ElementId element) const {
     if (!canonical_rank_.empty()) __builtin_prefetch(&canonical_rank_[element]);
   }
-  // Asks for the cache lines node_elements(node) reads first: the row's bounds and its start.
+  // Asks for the cache line node_elements(node) reads first, the row's bounds; where its items
+  // lie is known only once that has arrived.
   void PrefetchNodeElements(NodeId node) const {
     __builtin_prefetch(&node_elements_.offsets[node]);
   }
