@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "absl/container/flat_hash_map.h"
 #include "getme/elements/element_quality.h"
 #include "getme/elements/transform.h"
 #include "getme/elements/vec3.h"
@@ -32,13 +33,6 @@ constexpr std::int64_t kMinimumBatch = 16;
 // its last new best q_min came at pick 2,997 of the 31,040 a window of elements / 4 ran.
 constexpr std::int64_t kActiveRounds = 8;
 constexpr std::int64_t kMinimumWindow = 1000;
-
-// The last batch's table of found candidates (SequentialSubstep::last_found_table_): an empty slot,
-// and the slot an element's search starts at (Fibonacci hashing).
-constexpr std::int64_t kNoEntry = -1;
-inline std::size_t TableSlot(ElementId element, std::size_t mask) {
-  return (static_cast<std::uint64_t>(element) * 0x9E3779B97F4A7C15ull >> 32) & mask;
-}
 
 struct NodeBackup {
   NodeId node;
@@ -182,9 +176,9 @@ class SequentialSubstep {
   // not take come back in the next one (RememberLastBatch, FindAffected).
   std::vector<PickWork> last_work_;
   std::vector<std::uint8_t> last_found_;
-  // element → index into last_work_, open addressing; kNoEntry where empty. Written between
-  // batches, read by every thread during FindAndClaim.
-  std::vector<std::int64_t> last_found_table_;
+  // element → index into last_work_ of its found entry. Written between batches, read by every
+  // thread during FindAndClaim.
+  absl::flat_hash_map<ElementId, std::int64_t> last_found_index_;
   std::vector<NodeBackup> undo_since_best_;
 };
 
@@ -231,33 +225,16 @@ bool SequentialSubstep::TryClaim(const PickWork& work) {
 void SequentialSubstep::RememberLastBatch() {
   std::swap(work_, last_work_);
   std::swap(found_, last_found_);
-  std::size_t found = 0;
-  for (std::uint8_t f : last_found_) found += f;
-  std::size_t size = 16;
-  while (size < 2 * found) size *= 2;
-  last_found_table_.assign(size, kNoEntry);
-  const std::size_t mask = size - 1;
+  last_found_index_.clear();  // keeps its capacity
   for (std::size_t i = 0; i < last_found_.size(); ++i) {
-    if (!last_found_[i]) continue;
-    const ElementId element = last_work_[i].element;
-    std::size_t slot = TableSlot(element, mask);
-    while (last_found_table_[slot] != kNoEntry &&
-           last_work_[last_found_table_[slot]].element != element) {
-      slot = (slot + 1) & mask;
-    }
-    last_found_table_[slot] = static_cast<std::int64_t>(i);
+    if (last_found_[i]) last_found_index_.try_emplace(last_work_[i].element, i);
   }
   std::fill(found_.begin(), found_.end(), 0);
 }
 
 std::int64_t SequentialSubstep::FoundInLastBatch(ElementId element) const {
-  if (last_found_table_.empty()) return -1;
-  const std::size_t mask = last_found_table_.size() - 1;
-  for (std::size_t slot = TableSlot(element, mask);; slot = (slot + 1) & mask) {
-    const std::int64_t entry = last_found_table_[slot];
-    if (entry == kNoEntry) return -1;
-    if (last_work_[entry].element == element) return entry;
-  }
+  const auto found = last_found_index_.find(element);
+  return found == last_found_index_.end() ? -1 : found->second;
 }
 
 void SequentialSubstep::FindAndClaim(std::int64_t begin, std::int64_t end) {
