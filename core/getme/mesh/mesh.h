@@ -112,7 +112,7 @@ class Mesh {
   void PrefetchElement(ElementId element) const {
     __builtin_prefetch(&element_type_[element]);
     __builtin_prefetch(&block_index_[element]);
-    if (!canonical_rank_.empty()) __builtin_prefetch(&canonical_rank_[element]);
+    PrefetchCanonicalRank(element);
   }
   // Asks for the cache line canonical_rank(element) reads.
   void PrefetchCanonicalRank(ElementId element) const {

@@ -329,8 +329,9 @@ void SequentialSubstep::ChooseBatch() {
     const std::int64_t end = std::min(count, begin + 2 * limit);
     if (static_cast<std::int64_t>(work_.size()) < end) work_.resize(end);
     for (std::int64_t i = begin; i < end; ++i) {
-      work_[i].element = i < static_cast<std::int64_t>(ranked_candidates_) ? candidates_[i] : -1;
-      work_[i].rank = candidates_[i];
+      const bool ranked = i >= static_cast<std::int64_t>(ranked_candidates_);
+      work_[i].element = ranked ? -1 : candidates_[i];
+      work_[i].rank = ranked ? candidates_[i] : -1;
     }
     FindAndClaim(begin, end);
   }
