@@ -77,7 +77,7 @@ class SequentialSubstep {
         stop_(stop),
         phase_(criterion == SelectionCriterion::kMeanRatio ? Phase::kSequential : Phase::kWarpage),
         penalty_(mesh_.element_count(), 0.0),
-        criterion_value_(mesh_.element_count()),
+        criterion_value_(criterion == SelectionCriterion::kMeanRatio ? 0 : mesh_.element_count()),
         picked_in_batch_(mesh_.element_count(), -1),
         batch_limit_(BatchLimit(params_, mesh_)),
         claimed_(batch_limit_ > 1 ? (mesh_.element_count() + 63) / 64 : 0, 0),
@@ -90,6 +90,12 @@ class SequentialSubstep {
 
  private:
   double Criterion(ElementId element, double quality) const;
+  // The element's current criterion: max(0, q) for the mean ratio (what Criterion gives it),
+  // else the stored q_γ.
+  double CriterionValue(ElementId element) const {
+    return criterion_value_.empty() ? std::max(0.0, context_.quality[element])
+                                    : criterion_value_[element];
+  }
   // Picks per batch: at most sequential_batch, and one per sequential_batch_elements elements;
   // where that is fewer than kMinimumBatch, one pick at a time.
   static std::int64_t BatchLimit(const SmoothingParams& params, const Mesh& mesh) {
@@ -144,8 +150,11 @@ class SequentialSubstep {
   const SelectionCriterion criterion_;
   const SequentialStop stop_;
   const Phase phase_;
-  std::vector<double> penalty_;          // π_j ≥ 0
-  std::vector<double> criterion_value_;  // q(E_j) or q_γ(E_j)
+  std::vector<double> penalty_;  // π_j ≥ 0
+  // q_γ(E_j) for the warpage criterion; left empty for the mean ratio, whose criterion is the
+  // element's quality (CriterionValue): one array fewer for each of the ~60 elements a pick
+  // evaluates, most of them cache misses on a large mesh.
+  std::vector<double> criterion_value_;
   // The batch each element was last picked in (Δπ_r: picked in the batch before).
   std::vector<std::int64_t> picked_in_batch_;
   const std::int64_t batch_limit_;  // BatchLimit
@@ -348,7 +357,7 @@ void SequentialSubstep::RunPick(PickWork& work) {
   for (ElementId element : work.affected) {
     mesh_.PrefetchElement(element);
     __builtin_prefetch(&context_.quality[element], 1);
-    __builtin_prefetch(&criterion_value_[element], 1);
+    if (!criterion_value_.empty()) __builtin_prefetch(&criterion_value_[element], 1);
     __builtin_prefetch(&penalty_[element]);
     quality_min_.Prefetch(element);
   }
@@ -426,7 +435,7 @@ void SequentialSubstep::RunPick(PickWork& work) {
       z[b.node] = b.z;
     }
     penalty_[pick] += params_.penalty_invalid;  // Δπ_i
-    SetKey(selection_, mesh_.canonical_rank(pick), criterion_value_[pick] + penalty_[pick], work);
+    SetKey(selection_, mesh_.canonical_rank(pick), CriterionValue(pick) + penalty_[pick], work);
     return;
   }
   penalty_[pick] = std::max(0.0, penalty_[pick] - params_.penalty_success);  // Δπ_s
@@ -436,13 +445,13 @@ void SequentialSubstep::RunPick(PickWork& work) {
     const double q = work.affected_quality[i];
     work.quality_gain[i] = q - std::max(0.0, context_.quality[element]);
     context_.quality[element] = q;
-    criterion_value_[element] = Criterion(element, q);
     SetKey(quality_min_, element, q, work);
     if (criterion_ != SelectionCriterion::kMeanRatio) {
+      criterion_value_[element] = Criterion(element, q);
       SetKey(criterion_min_, element, criterion_value_[element], work);
     }
     if (const std::int32_t rank = mesh_.canonical_rank(element); selection_.contains(rank)) {
-      SetKey(selection_, rank, criterion_value_[element] + penalty_[element], work);
+      SetKey(selection_, rank, CriterionValue(element) + penalty_[element], work);
     }
   }
 }
@@ -534,15 +543,15 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
   for (ElementId element : mesh_.canonical_order()) {  // the running sum's order matters
     const double q = std::max(0.0, context_.quality[element]);
     quality_sum_ += q;
-    criterion_value_[element] = Criterion(element, q);
     quality_min_.Insert(element, q);
     if (criterion_ != SelectionCriterion::kMeanRatio) {
+      criterion_value_[element] = Criterion(element, q);
       criterion_min_.Insert(element, criterion_value_[element]);
     }
     if (context_.HasMovableNode(element)) {
-      selection_.Insert(mesh_.canonical_rank(element), criterion_value_[element]);
+      selection_.Insert(mesh_.canonical_rank(element), CriterionValue(element));
     } else {
-      pinned_min = std::min(pinned_min, criterion_value_[element]);
+      pinned_min = std::min(pinned_min, CriterionValue(element));
     }
   }
 
