@@ -4,10 +4,10 @@
 // for every batch), no claim bits, nothing found in parallel, and no list copied from the batch
 // before (each candidate's elements are collected afresh from the node→element rows). It runs a
 // batch's picks one after the other in batch order. Only the element kernels (the transform of
-// Def. 1 with eqs. 8 and 11, and the mean ratio of Def. 3) are the engine's, tested on their own
-// elsewhere. So a wrong candidate order, band, look-ahead depth, claim, blocker, penalty or copied
-// list in the engine shows here as different coordinates, even where it is deterministic, which the
-// thread-count tests cannot see.
+// Def. 1 with eqs. 8 and 11, the mean ratio of Def. 3 and q_γ of Sec. 4.4) are the engine's,
+// tested on their own elsewhere. So a wrong candidate order, band, look-ahead depth, claim,
+// blocker, penalty or copied list in the engine shows here as different coordinates, even where it
+// is deterministic, which the thread-count tests cannot see.
 
 #include <gtest/gtest.h>
 
@@ -172,16 +172,14 @@ class BatchedSequentialModel {
     return others;
   }
 
-  // q, or q_γ = min(q, γ(1 − w/2)), of the element at its nodes' current positions; an invalid
-  // element counts as 0.
+  // q, or q_γ = min(q, γ(1 − w/2)) (Sec. 4.4, QualityGamma), of the element at its nodes'
+  // current positions; an invalid element counts as 0.
   double CriterionOf(ElementId element, double quality) const {
-    const double q = std::max(0.0, quality);
-    if (criterion_kind_ == SelectionCriterion::kMeanRatio) return q;
+    if (criterion_kind_ == SelectionCriterion::kMeanRatio) return std::max(0.0, quality);
     const NodeId* ids = mesh_.element_nodes(element).data();
-    const double warpage = DispatchElementType(mesh_.type(element), [&]<ElementType kType>() {
-      return Warpage<kType>(GatherNodes<kType>(mesh_, ids));
+    return DispatchElementType(mesh_.type(element), [&]<ElementType kType>() {
+      return QualityGamma<kType>(GatherNodes<kType>(mesh_, ids), params_.gamma);
     });
-    return std::min(q, params_.gamma * (1.0 - warpage / 2.0));
   }
 
   double QualityOf(ElementId element) const {

@@ -89,9 +89,10 @@ class SequentialSubstep {
   absl::StatusOr<PhaseSummary> Run();
 
  private:
-  double Criterion(ElementId element, double quality) const;
-  // The element's current criterion: max(0, q) for the mean ratio (what Criterion gives it),
-  // else the stored q_γ.
+  // q_γ = min(q, γ(1 − w/2)) of Sec. 4.4 (QualityGamma in element_quality.h) from the quality
+  // the pick has just evaluated, so that only the warpage is computed again.
+  double QualityGammaOf(ElementId element, double quality) const;
+  // The element's current criterion: max(0, q) for the mean ratio, else the stored q_γ.
   double CriterionValue(ElementId element) const {
     return criterion_value_.empty() ? std::max(0.0, context_.quality[element])
                                     : criterion_value_[element];
@@ -191,14 +192,12 @@ class SequentialSubstep {
   std::vector<NodeBackup> undo_since_best_;
 };
 
-double SequentialSubstep::Criterion(ElementId element, double quality) const {
-  const double q = std::max(0.0, quality);
-  if (criterion_ == SelectionCriterion::kMeanRatio) return q;
+double SequentialSubstep::QualityGammaOf(ElementId element, double quality) const {
   const NodeId* ids = mesh_.element_nodes(element).data();
   const double warpage = DispatchElementType(mesh_.type(element), [&]<ElementType kType>() {
     return Warpage<kType>(GatherNodes<kType>(mesh_, ids));
   });
-  return std::min(q, params_.gamma * (1.0 - warpage / 2.0));
+  return std::min(std::max(0.0, quality), params_.gamma * (1.0 - warpage / 2.0));
 }
 
 // Which elements a pick evaluates depends only on the mesh's connectivity and which nodes may move,
@@ -447,7 +446,7 @@ void SequentialSubstep::RunPick(PickWork& work) {
     context_.quality[element] = q;
     SetKey(quality_min_, element, q, work);
     if (criterion_ != SelectionCriterion::kMeanRatio) {
-      criterion_value_[element] = Criterion(element, q);
+      criterion_value_[element] = QualityGammaOf(element, q);
       SetKey(criterion_min_, element, criterion_value_[element], work);
     }
     if (const std::int32_t rank = mesh_.canonical_rank(element); selection_.contains(rank)) {
@@ -545,7 +544,7 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
     quality_sum_ += q;
     quality_min_.Insert(element, q);
     if (criterion_ != SelectionCriterion::kMeanRatio) {
-      criterion_value_[element] = Criterion(element, q);
+      criterion_value_[element] = QualityGammaOf(element, q);
       criterion_min_.Insert(element, criterion_value_[element]);
     }
     if (context_.HasMovableNode(element)) {
