@@ -128,5 +128,8 @@ double SurfaceProjector::DistanceToSurface(const Vec3& point) const {
 
 int SurfaceProjector::group_count() const { return static_cast<int>(trees_->group_grids.size()); }
 int SurfaceProjector::curve_count() const { return static_cast<int>(trees_->curves.size()); }
+const std::vector<TriangleGrid>& SurfaceProjector::group_grids() const {
+  return trees_->group_grids;
+}
 
 }  // namespace getme::surface

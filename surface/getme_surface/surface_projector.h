@@ -14,11 +14,13 @@
 // read (the trees are built under std::call_once), so threads may share a projector.
 
 #include <memory>
+#include <vector>
 
 #include "absl/status/statusor.h"
 #include "getme/elements/vec3.h"
 #include "getme/mesh/mesh.h"
 #include "getme_surface/boundary_surface.h"
+#include "getme_surface/triangle_grid.h"
 
 namespace getme::surface {
 
@@ -50,6 +52,8 @@ class SurfaceProjector {
 
   int group_count() const;
   int curve_count() const;
+  // Per group, the grid of its triangles (for node_triangles.h's lists).
+  const std::vector<TriangleGrid>& group_grids() const;
 
  private:
   struct Trees;

@@ -19,6 +19,7 @@ absl::StatusOr<std::unique_ptr<SurfaceSlide>> SurfaceSlide::Build(const Mesh& me
   std::unique_ptr<SurfaceSlide> slide(new SurfaceSlide(
       options, *std::move(surface), *std::move(projector), std::move(layers), std::move(walls)));
   slide->IndexNeighbourhoods(mesh.node_count());
+  slide->ListNodeTriangles(mesh);
   if (!options.keep_layers) return slide;
   slide->kept_ = DescribeKeptLayers(mesh, slide->layers_, *slide->walls_);
   for (const NodeId node : slide->kept_.nodes) {
@@ -48,6 +49,16 @@ void SurfaceSlide::IndexNeighbourhoods(std::int64_t node_count) {
     neighbourhood_.insert(neighbourhood_.end(), list.begin(), list.end());
     neighbourhood_offsets_.push_back(static_cast<std::int64_t>(neighbourhood_.size()));
   }
+}
+
+void SurfaceSlide::ListNodeTriangles(const Mesh& mesh) {
+  std::vector<bool> listed(static_cast<std::size_t>(mesh.node_count()), false);
+  for (NodeId node = 0; node < mesh.node_count(); ++node) {
+    listed[static_cast<std::size_t>(node)] =
+        surface_.kind[node] == BoundaryNodeKind::kSurface && Slides(node);
+  }
+  node_triangles_ = NodeTriangles(mesh, surface_, projector_.group_grids(), listed,
+                                  neighbourhood_offsets_, neighbourhood_);
 }
 
 bool SurfaceSlide::Slides(NodeId node) const {
@@ -91,6 +102,12 @@ int SurfaceSlide::TangentSpace(const Mesh& mesh, NodeId node, std::array<Vec3, 2
 }
 
 Vec3 SurfaceSlide::Project(NodeId node, const Vec3& point, const Vec3* near) const {
+  if (near != nullptr && surface_.kind[node] == BoundaryNodeKind::kSurface) {
+    const std::optional<Vec3> nearest = node_triangles_.Nearest(
+        projector_.group_grids()[static_cast<std::size_t>(surface_.support[node])], node, point,
+        *near);
+    if (nearest) return *nearest;
+  }
   return projector_.Project(surface_.kind[node], surface_.support[node], point, near);
 }
 

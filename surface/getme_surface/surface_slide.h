@@ -19,6 +19,7 @@
 #include "getme_surface/boundary_surface.h"
 #include "getme_surface/kept_columns.h"
 #include "getme_surface/layer_columns.h"
+#include "getme_surface/node_triangles.h"
 #include "getme_surface/surface_projector.h"
 #include "getme_surface/wall_distance.h"
 
@@ -64,6 +65,7 @@ class SurfaceSlide final : public BoundarySlide {
   // With keep_layers only: the walls and the columns as the engine keeps them.
   const WallDistance& walls() const { return *walls_; }
   const KeptLayers& columns() const { return kept_; }
+  const NodeTriangles& node_triangles() const { return node_triangles_; }
 
  private:
   SurfaceSlide(const SlideOptions& options, BoundarySurface surface, SurfaceProjector projector,
@@ -80,6 +82,7 @@ class SurfaceSlide final : public BoundarySlide {
         walls_(std::move(walls)) {}
 
   void IndexNeighbourhoods(std::int64_t node_count);
+  void ListNodeTriangles(const Mesh& mesh);
 
   SlideOptions options_;
   BoundarySurface surface_;
@@ -92,6 +95,9 @@ class SurfaceSlide final : public BoundarySlide {
   // neighbours along its curve of a feature node; empty for other nodes.
   std::vector<std::int64_t> neighbourhood_offsets_;
   std::vector<std::int64_t> neighbourhood_;
+  // The sliding surface nodes' own triangle lists, which answer most of Project()'s queries
+  // before the grid is asked.
+  NodeTriangles node_triangles_;
 };
 
 }  // namespace getme::surface

@@ -241,4 +241,49 @@ std::optional<Vec3> TriangleGrid::NearestWithin(const Vec3& point, double bound)
   return best;
 }
 
+bool TriangleGrid::TrianglesWithin(const Vec3& point, double radius, std::vector<Reach>& within,
+                                   std::vector<std::uint32_t>& seen) const {
+  within.clear();
+  seen.clear();
+  if (triangles_.empty() || !point.allFinite() || !(radius >= 0.0) || !std::isfinite(radius)) {
+    return true;
+  }
+  const Vec3 corner = Vec3::Constant(radius);
+  for (const int level : levels_) {
+    const CellRange range = CellsOf(level, point - corner, point + corner);
+    if (CellCount(range) > kMaxGatherCells) return false;
+    for (std::int64_t i = range[0][0]; i <= range[1][0]; ++i) {
+      for (std::int64_t j = range[0][1]; j <= range[1][1]; ++j) {
+        for (std::int64_t k = range[0][2]; k <= range[1][2]; ++k) {
+          const auto cell = cells_.find(Key(level, {i, j, k}));
+          if (cell == cells_.end()) continue;
+          for (std::uint32_t m = cell->second.first; m < cell->second.second; ++m) {
+            // Only triangles whose box comes within the radius (the boxes are rounded outwards).
+            const Member& member = members_[m];
+            double outside = 0.0;
+            for (std::size_t axis = 0; axis < 3; ++axis) {
+              const double below = static_cast<double>(member.low[axis]) - point[axis];
+              const double above = point[axis] - static_cast<double>(member.high[axis]);
+              const double gap = std::max({below, above, 0.0});
+              outside += gap * gap;
+            }
+            if (outside <= radius * radius) seen.push_back(member.triangle);
+          }
+        }
+      }
+    }
+  }
+  // A triangle is listed by every cell its box touches.
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+  for (const std::uint32_t t : seen) {
+    const double distance = (ClosestPoint(triangles_[t], point) - point).norm();
+    if (distance <= radius) within.push_back({distance, t});
+  }
+  std::sort(within.begin(), within.end(), [](const Reach& a, const Reach& b) {
+    return a.distance != b.distance ? a.distance < b.distance : a.triangle < b.triangle;
+  });
+  return true;
+}
+
 }  // namespace getme::surface

@@ -49,6 +49,24 @@ class TriangleGrid {
   // two cells or more in every direction, which the smoothers rarely make).
   static constexpr std::int64_t kMaxCells = 64;
 
+  // A triangle and its distance from a point.
+  struct Reach {
+    double distance;
+    std::uint32_t triangle;
+  };
+  // Every triangle within `radius` of `point` with its distance, nearest first (equal distances
+  // by index), into `within`; false if the ball spans more than kMaxGatherCells cells in a level.
+  // For lists built once (node_triangles.h), so it may look at more cells than a query does.
+  // `scratch` is working space, kept by the caller to spare an allocation per call.
+  bool TrianglesWithin(const Vec3& point, double radius, std::vector<Reach>& within,
+                       std::vector<std::uint32_t>& scratch) const;
+  static constexpr std::int64_t kMaxGatherCells = 512;
+
+  // The nearest point of triangle `triangle` (an index TrianglesWithin gave) to `point`.
+  Vec3 ClosestPointOf(std::uint32_t triangle, const Vec3& point) const {
+    return ClosestPoint(triangles_[triangle], point);
+  }
+
   // Level 0's cell size, and how many levels hold triangles.
   double cell_size() const { return cell_size_; }
   int level_count() const { return static_cast<int>(levels_.size()); }

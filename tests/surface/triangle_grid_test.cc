@@ -128,6 +128,45 @@ TEST(TriangleGridTest, AGradedSetNeedsLevelsAndFindsTheNearestPointOnEither) {
   EXPECT_NEAR((*found - centre).norm(), 0.0, 1e-12);
 }
 
+// The lists node_triangles.h builds: every triangle within the radius, and no other, nearest
+// first, against the brute-force distances (triangles within 1e-12 of the radius either way are
+// not asked about). Radii of a fraction of a cell to a few cells, on both sets.
+TEST(TriangleGridTest, TrianglesWithinARadiusAreExactlyTheBruteForceOnes) {
+  for (const std::vector<Triangle3>& triangles : {UvSphere(12, 24), GradedSet()}) {
+    const TriangleGrid grid(Corners(triangles));
+    std::mt19937_64 random(5);
+    std::uniform_int_distribution<std::size_t> pick(0, triangles.size() - 1);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> scale(0.1, 3.0);
+    std::vector<TriangleGrid::Reach> within;
+    std::vector<std::uint32_t> scratch;
+    int listed = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+      const Triangle3& t = triangles[pick(random)];
+      const double radius = scale(random) * grid.cell_size();
+      const Vec3 point = t.a + 0.5 * radius * Vec3(unit(random), unit(random), unit(random));
+      ASSERT_TRUE(grid.TrianglesWithin(point, radius, within, scratch)) << "trial " << trial;
+      for (std::size_t k = 1; k < within.size(); ++k) {
+        EXPECT_LE(within[k - 1].distance, within[k].distance) << "trial " << trial;
+      }
+      std::vector<bool> in_list(triangles.size(), false);
+      for (const TriangleGrid::Reach& reach : within) {
+        in_list[reach.triangle] = true;
+        const double expected =
+            (ClosestOnTriangle(point, triangles[reach.triangle]) - point).norm();
+        EXPECT_NEAR(reach.distance, expected, 1e-12) << "trial " << trial;
+      }
+      for (std::size_t k = 0; k < triangles.size(); ++k) {
+        const double distance = (ClosestOnTriangle(point, triangles[k]) - point).norm();
+        if (std::abs(distance - radius) < 1e-12) continue;
+        EXPECT_EQ(in_list[k], distance < radius) << "trial " << trial << ", triangle " << k;
+      }
+      listed += static_cast<int>(within.size());
+    }
+    EXPECT_GT(listed, 200);
+  }
+}
+
 TEST(TriangleGridTest, NothingWithinTheBoundIsNoAnswer) {
   const std::vector<Triangle3> sphere = UvSphere(12, 24);
   const TriangleGrid grid(Corners(sphere));
