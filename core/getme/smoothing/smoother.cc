@@ -77,8 +77,13 @@ absl::Status RunMethod(SmoothingContext& context, Method method, Record& record)
       // plateau: the polish climbs the rest faster (simultaneous_smoother.h).
       const bool polish = method == Method::kGetme && context.params.polish;
       // With the polish, a sliding boundary first runs the held run itself (RunSlidingStages).
+      // Where no node slides (a file that fixes its whole boundary, say) the held run is the
+      // whole run: stages run again for no sliding node would make `slide` differ from `fixed`.
       std::optional<SlidingNodesHeld> held;
-      if (polish && context.params.slide_boundary) held.emplace(context);
+      if (polish && context.params.slide_boundary &&
+          std::find(context.sliding.begin(), context.sliding.end(), 1) != context.sliding.end()) {
+        held.emplace(context);
+      }
       if (auto s = record(RunSimultaneous(
               context, polish ? SimultaneousStop::kHandOnToPolish : SimultaneousStop::kSettled));
           !s.ok()) {
