@@ -1,5 +1,6 @@
 #include "getme_surface/surface_projector.h"
 
+#include <algorithm>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -46,11 +47,6 @@ struct SurfaceProjector::Trees {
   std::unique_ptr<LazyTriangles[]> groups;
   std::vector<TriangleGrid> group_grids;
   std::vector<aabb::SegmentSet> curves;
-  // Every group's triangles, for distances to the whole surface (all_grid only with several
-  // groups: AllGrid()).
-  LazyTriangles all;
-  std::optional<TriangleGrid> all_grid;
-  const TriangleGrid& AllGrid() const { return all_grid ? *all_grid : group_grids.front(); }
 };
 
 absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
@@ -67,7 +63,6 @@ absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
   };
   for (const BoundaryFace& face : surface.faces) {
     aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->groups[face.group].set.items);
-    aabb::AppendFaceTriangles(mesh, face.nodes, face.size, trees->all.set.items);
   }
   for (std::size_t e = 0; e < surface.feature_edges.size(); ++e) {
     const Segment segment(point(surface.feature_edges[e][0]), point(surface.feature_edges[e][1]));
@@ -76,8 +71,6 @@ absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
   for (int group = 0; group < surface.group_count; ++group) {
     trees->group_grids.emplace_back(Corners(trees->groups[group].set.items));
   }
-  // With one group, its grid is the whole surface's.
-  if (surface.group_count != 1) trees->all_grid.emplace(Corners(trees->all.set.items));
   for (auto& curve : trees->curves) curve.Build();
   return SurfaceProjector(std::move(trees));
 }
@@ -114,16 +107,34 @@ Vec3 SurfaceProjector::Project(BoundaryNodeKind kind, int support, const Vec3& p
   return point;
 }
 
-double SurfaceProjector::DistanceToSurface(const Vec3& point) const {
-  if (trees_->all.set.items.empty()) return std::numeric_limits<double>::infinity();
+double SurfaceProjector::DistanceToGroup(int group, const Vec3& point) const {
+  const Trees::LazyTriangles& triangles = trees_->groups[group];
+  if (triangles.set.items.empty()) return std::numeric_limits<double>::infinity();
   // The points asked about are sliding nodes, on the surface or within rounding of it: a grid
   // search within a thousandth of a cell answers them exactly (no nearer point can lie outside
   // the bound), and the tree answers the rest.
-  const TriangleGrid& grid = trees_->AllGrid();
+  const TriangleGrid& grid = trees_->group_grids[group];
   if (const std::optional<Vec3> nearest = grid.NearestWithin(point, 1e-3 * grid.cell_size())) {
     return (*nearest - point).norm();
   }
-  return (trees_->all.Get().Nearest(point) - point).norm();
+  return (triangles.Get().Nearest(point) - point).norm();
+}
+
+double SurfaceProjector::DistanceToCurve(int curve, const Vec3& point) const {
+  if (trees_->curves[curve].items.empty()) return std::numeric_limits<double>::infinity();
+  return (trees_->curves[curve].Nearest(point) - point).norm();
+}
+
+double SurfaceProjector::DistanceToSurface(const Vec3& point) const {
+  // Not on the smoothers' path (they ask DistanceToGroup and DistanceToCurve for their nodes), so
+  // the plain way: the nearest of every group's tree.
+  double distance = std::numeric_limits<double>::infinity();
+  for (int group = 0; group < group_count(); ++group) {
+    if (!trees_->groups[group].set.items.empty()) {
+      distance = std::min(distance, (trees_->groups[group].Get().Nearest(point) - point).norm());
+    }
+  }
+  return distance;
 }
 
 int SurfaceProjector::group_count() const { return static_cast<int>(trees_->group_grids.size()); }

@@ -47,6 +47,10 @@ class SurfaceProjector {
   // the projector's business, corners do not move).
   Vec3 Project(BoundaryNodeKind kind, int support, const Vec3& point,
                const Vec3* near = nullptr) const;
+  // The distance from `point` to the nearest face of group `group`, or to curve `curve`: how far
+  // a sliding node is from where it belongs (the result check asks it for every sliding node).
+  double DistanceToGroup(int group, const Vec3& point) const;
+  double DistanceToCurve(int curve, const Vec3& point) const;
   // The distance from `point` to the nearest face of any group.
   double DistanceToSurface(const Vec3& point) const;
 

@@ -131,7 +131,16 @@ std::optional<Vec3> SurfaceSlide::OnColumn(std::int64_t index, const Vec3& from,
   return point;
 }
 
-double SurfaceSlide::DistanceToSurface(const Vec3& point) const {
+double SurfaceSlide::DistanceToSurface(NodeId node, const Vec3& point) const {
+  switch (surface_.kind[node]) {
+    case BoundaryNodeKind::kSurface:
+      return projector_.DistanceToGroup(surface_.support[node], point);
+    case BoundaryNodeKind::kFeature:
+      return projector_.DistanceToCurve(surface_.support[node], point);
+    case BoundaryNodeKind::kInterior:
+    case BoundaryNodeKind::kCorner:
+      break;
+  }
   return projector_.DistanceToSurface(point);
 }
 

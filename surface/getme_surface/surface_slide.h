@@ -43,7 +43,7 @@ class SurfaceSlide final : public BoundarySlide {
 
   bool Slides(NodeId node) const override;
   Vec3 Project(NodeId node, const Vec3& point, const Vec3* near = nullptr) const override;
-  double DistanceToSurface(const Vec3& point) const override;
+  double DistanceToSurface(NodeId node, const Vec3& point) const override;
   // From the node's own boundary faces (or its two curve neighbours) at their current corners,
   // which the smoothers keep on the surface: the plane of their summed area vectors, or the
   // chord between the neighbours. No nearest-point query (each costs about 0.7 µs, and the

@@ -15,7 +15,10 @@
 #include <random>
 #include <string>
 
+#include "absl/strings/str_cat.h"
 #include "getme/meshgen/hybrid_block.h"
+#include "getme/parallel/thread_pool.h"
+#include "getme/smoothing/result_check.h"
 #include "getme/smoothing/smoother.h"
 #include "getme/smoothing/smoothing_context.h"
 #include "getme/smoothing/worst_cluster.h"
@@ -129,6 +132,46 @@ TEST(SurfaceSlideTest, WithEveryBoundaryNodeFixedSlidingIsTheFixedRun) {
     ASSERT_EQ(sliding.y()[node], fixed.y()[node]) << "node " << node;
     ASSERT_EQ(sliding.z()[node], fixed.z()[node]) << "node " << node;
   }
+}
+
+// The result check holds a sliding node to where it belongs, not merely to the surface: an edge
+// node of the cube moved along its edge passes, moved onto one of its two faces (still on the
+// surface, off its feature curve) is an Internal error naming it. A face node passes within its
+// face and fails off the surface.
+TEST(SurfaceSlideTest, TheResultCheckKeepsEachNodeOnItsOwnCurveOrFace) {
+  Mesh mesh = test::HexCube(2);
+  absl::StatusOr<std::unique_ptr<SurfaceSlide>> slide = SurfaceSlide::Build(mesh);
+  ASSERT_TRUE(slide.ok()) << slide.status();
+  const BoundarySurface& surface = (*slide)->surface();
+  // Node (1, 0, 0) is the middle of the edge y = z = 0; node (1, 1, 0) the middle of face z = 0.
+  const NodeId edge_node = 1;
+  const NodeId face_node = 1 + 3 * 1;
+  ASSERT_EQ(surface.kind[edge_node], BoundaryNodeKind::kFeature);
+  ASSERT_EQ(surface.kind[face_node], BoundaryNodeKind::kSurface);
+  std::vector<std::uint8_t> movable(static_cast<std::size_t>(mesh.node_count()), 1);
+  std::vector<std::uint8_t> sliding(static_cast<std::size_t>(mesh.node_count()), 0);
+  sliding[edge_node] = sliding[face_node] = 1;
+  const ResultCheck check(mesh, movable, slide->get(), sliding);
+  ThreadPool pool(1);
+  const auto check_now = [&] { return check.Check(mesh, EvaluateMeshQuality(mesh, pool)); };
+
+  mesh.x()[edge_node] = 1.2;  // along its edge
+  EXPECT_TRUE(check_now().ok()) << check_now();
+  mesh.y()[edge_node] = 0.2;  // onto face z = 0, off the edge
+  const absl::Status off_curve = check_now();
+  EXPECT_EQ(off_curve.code(), absl::StatusCode::kInternal) << off_curve;
+  EXPECT_NE(off_curve.message().find(absl::StrCat("node ", edge_node, " ")), std::string::npos)
+      << off_curve;
+  mesh.x()[edge_node] = 1.0;
+  mesh.y()[edge_node] = 0.0;
+  EXPECT_TRUE(check_now().ok()) << check_now();
+  mesh.x()[face_node] = 0.8;
+  EXPECT_TRUE(check_now().ok()) << check_now();
+  mesh.z()[face_node] = 0.1;
+  const absl::Status off_surface = check_now();
+  EXPECT_EQ(off_surface.code(), absl::StatusCode::kInternal) << off_surface;
+  EXPECT_NE(off_surface.message().find(absl::StrCat("node ", face_node, " ")), std::string::npos)
+      << off_surface;
 }
 
 TEST(SurfaceSlideTest, SlidingNeedsItsSurfaceAndAHeldBoundary) {

@@ -27,9 +27,10 @@ class BoundarySlide {
   // a point where the node already belongs (its position before the move): a nearest-point
   // search that starts from it prunes most of the surface at once.
   virtual Vec3 Project(NodeId node, const Vec3& point, const Vec3* near = nullptr) const = 0;
-  // How far `point` is from the input's boundary surface: the result check's measure for sliding
-  // boundary nodes.
-  virtual double DistanceToSurface(const Vec3& point) const = 0;
+  // How far sliding node `node`, put at `point`, is from where it belongs on the input's
+  // boundary: its own surface group's faces, or its feature curve. The result check's measure for
+  // sliding nodes, and the summary's largest distance.
+  virtual double DistanceToSurface(NodeId node, const Vec3& point) const = 0;
   // An orthonormal basis of the directions sliding node `node` may move in where `mesh` has it
   // (a point where it belongs): two on a surface, one along a feature curve, none where it
   // cannot move. Returns how many. This default reads them off Project(): small moves along the

@@ -68,12 +68,13 @@ absl::Status ResultCheck::Check(const Mesh& mesh, const MeshQuality& after) cons
   }
   for (NodeId node : sliding_) {
     const Vec3 p(x[node], y[node], z[node]);
-    const double distance = slide_->DistanceToSurface(p);
+    const double distance = slide_->DistanceToSurface(node, p);
     if (!(distance <= surface_tolerance_)) {
-      return absl::InternalError(
-          absl::StrCat("result check: sliding boundary node ", node, " at ",
-                       Coordinates(p[0], p[1], p[2]), " is ", distance,
-                       " from the input's boundary surface (allowed: ", surface_tolerance_, ")"));
+      return absl::InternalError(absl::StrCat(
+          "result check: sliding boundary node ", node, " at ", Coordinates(p[0], p[1], p[2]),
+          " is ", distance,
+          " from its own surface group or feature curve of the input's boundary (allowed: ",
+          surface_tolerance_, ")"));
     }
   }
   if (after.invalid > 0) {

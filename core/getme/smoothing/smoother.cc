@@ -224,7 +224,7 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
     for (const auto& [node, start] : slide_start) {
       const Vec3 now(mesh.x()[node], mesh.y()[node], mesh.z()[node]);
       if (now != start) ++summary.slid_nodes;
-      summary.max_distance = std::max(summary.max_distance, slide->DistanceToSurface(now));
+      summary.max_distance = std::max(summary.max_distance, slide->DistanceToSurface(node, now));
     }
     result.boundary_slide = summary;
   }
