@@ -37,6 +37,12 @@ MODES = [("held", []), ("slide", ["--boundary", "slide"]),
          ("slide + keep", ["--boundary", "slide", "--keep-layers"])]
 
 
+def print_header(*columns):
+    """A Markdown table's header and separator rows."""
+    print("| " + " | ".join(columns) + " |")
+    print("|" + "---|" * len(columns))
+
+
 def run_once(getme, mesh, out, threads, extra):
     start = time.perf_counter()
     done = subprocess.run([getme, "smooth", mesh, out, "--json", "--quiet", "--threads",
@@ -64,8 +70,7 @@ def main():
         return projection_shares(builds, args)
     if args.against:
         return compare_builds(getme, os.path.join(args.against, "bin", "getme"), args)
-    print("| mesh | mode | process s (× held) | engine s (× held) | q_min / q_mean |")
-    print("|---|---|---|---|---|")
+    print_header("mesh", "mode", "process s (× held)", "engine s (× held)", "q_min / q_mean")
     with tempfile.TemporaryDirectory() as scratch:
         out = os.path.join(scratch, "out.vtk")
         for mesh in args.meshes:
@@ -91,9 +96,8 @@ def main():
 
 def compare_builds(getme, other, args):
     slide = ["--boundary", "slide"]
-    print("| mesh | held s | sliding s, other build (× held) | sliding s, this build (× held) "
-          "| change |")
-    print("|---|---|---|---|---|")
+    print_header("mesh", "held s", "sliding s, other build (× held)",
+                 "sliding s, this build (× held)", "change")
     with tempfile.TemporaryDirectory() as scratch:
         out = os.path.join(scratch, "out.vtk")
         for mesh in args.meshes:
@@ -133,9 +137,8 @@ def projection_share(getme, mesh, out, scratch):
 
 
 def projection_shares(builds, args):
-    print("| mesh | build | share of samples | sliding s (1 thread) | projections s | held s "
-          "| projections / held |")
-    print("|---|---|---|---|---|---|---|")
+    print_header("mesh", "build", "share of samples", "sliding s (1 thread)", "projections s",
+                 "held s", "projections / held")
     with tempfile.TemporaryDirectory() as scratch:
         out = os.path.join(scratch, "out.vtk")
         for mesh in args.meshes:
