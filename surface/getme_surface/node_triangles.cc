@@ -1,5 +1,6 @@
 #include "getme_surface/node_triangles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -17,7 +18,7 @@ NodeTriangles::NodeTriangles(const Mesh& mesh, const BoundarySurface& surface,
                              const std::vector<bool>& listed,
                              const std::vector<std::int64_t>& faces_of_offsets,
                              const std::vector<std::int64_t>& faces_of)
-    : nodes_(static_cast<std::size_t>(mesh.node_count())) {
+    : slot_(static_cast<std::size_t>(mesh.node_count()), kUnlisted) {
   const auto at = [&](NodeId n) { return Vec3(mesh.x()[n], mesh.y()[n], mesh.z()[n]); };
   std::vector<TriangleGrid::Reach> within;
   std::vector<std::uint32_t> scratch;
@@ -35,23 +36,24 @@ NodeTriangles::NodeTriangles(const Mesh& mesh, const BoundarySurface& surface,
     const double radius = kReachInUmbrellas * umbrella;
     const TriangleGrid& grid = grids[static_cast<std::size_t>(surface.support[node])];
     if (!grid.TrianglesWithin(origin, radius, within, scratch) || within.empty()) continue;
-    Node& entry = nodes_[static_cast<std::size_t>(node)];
-    entry.origin = origin;
-    entry.reach = radius * (1.0 - kReachMargin);
-    entry.begin = static_cast<std::uint32_t>(entries_.size());
+    slot_[static_cast<std::size_t>(node)] = static_cast<std::uint32_t>(nodes_.size());
+    const auto begin = static_cast<std::uint32_t>(entries_.size());
     for (const TriangleGrid::Reach& reach : within) {
       // Rounded down, so that the distance less s stays a lower bound.
       const float distance = std::nextafter(static_cast<float>(reach.distance), 0.0f);
       entries_.push_back({distance, reach.triangle});
     }
-    entry.end = static_cast<std::uint32_t>(entries_.size());
-    ++listed_nodes_;
+    nodes_.push_back({origin, radius * (1.0 - kReachMargin), begin,
+                      static_cast<std::uint32_t>(entries_.size())});
   }
 }
 
 std::optional<Vec3> NodeTriangles::Nearest(const TriangleGrid& grid, NodeId node, const Vec3& point,
                                            const Vec3& near) const {
-  const Node& entry = nodes_[static_cast<std::size_t>(node)];
+  if (static_cast<std::size_t>(node) >= slot_.size()) return std::nullopt;  // built for no mesh
+  const std::uint32_t slot = slot_[static_cast<std::size_t>(node)];
+  if (slot == kUnlisted) return std::nullopt;
+  const Node& entry = nodes_[slot];
   const double from_origin = (point - entry.origin).norm();
   const double move = (point - near).norm();
   if (!(from_origin + move <= entry.reach)) return std::nullopt;

@@ -52,22 +52,25 @@ class NodeTriangles {
   std::optional<Vec3> Nearest(const TriangleGrid& grid, NodeId node, const Vec3& point,
                               const Vec3& near) const;
 
-  std::int64_t listed_nodes() const { return listed_nodes_; }
+  std::int64_t listed_nodes() const { return static_cast<std::int64_t>(nodes_.size()); }
   std::int64_t entries() const { return static_cast<std::int64_t>(entries_.size()); }
 
  private:
   struct Node {
-    Vec3 origin = Vec3::Zero();
-    double reach = -1.0;  // negative: no list
-    std::uint32_t begin = 0, end = 0;
+    Vec3 origin;
+    double reach;
+    std::uint32_t begin, end;
   };
   struct Entry {
     float distance;  // from the node's origin, rounded down
     std::uint32_t triangle;
   };
+  static constexpr std::uint32_t kUnlisted = ~std::uint32_t{0};
+  // Per mesh node, its index in nodes_ (kUnlisted for most: only sliding surface nodes have a
+  // list, so a large mesh pays 4 bytes a node and the rest only for its boundary).
+  std::vector<std::uint32_t> slot_;
   std::vector<Node> nodes_;
   std::vector<Entry> entries_;
-  std::int64_t listed_nodes_ = 0;
 };
 
 }  // namespace getme::surface
