@@ -19,17 +19,16 @@ NodeTriangles::NodeTriangles(const Mesh& mesh, const BoundarySurface& surface,
                              const std::vector<std::int64_t>& faces_of_offsets,
                              const std::vector<std::int64_t>& faces_of)
     : slot_(static_cast<std::size_t>(mesh.node_count()), kUnlisted) {
-  const auto at = [&](NodeId n) { return Vec3(mesh.x()[n], mesh.y()[n], mesh.z()[n]); };
   std::vector<TriangleGrid::Reach> within;
   std::vector<std::uint32_t> scratch;
   for (NodeId node = 0; node < mesh.node_count(); ++node) {
     if (!listed[static_cast<std::size_t>(node)]) continue;
-    const Vec3 origin = at(node);
+    const Vec3 origin = NodePosition(mesh, node);
     double umbrella = 0.0;
     for (std::int64_t k = faces_of_offsets[node]; k < faces_of_offsets[node + 1]; ++k) {
       const BoundaryFace& face = surface.faces[static_cast<std::size_t>(faces_of[k])];
       for (int corner = 0; corner < face.size; ++corner) {
-        umbrella = std::max(umbrella, (at(face.nodes[corner]) - origin).norm());
+        umbrella = std::max(umbrella, (NodePosition(mesh, face.nodes[corner]) - origin).norm());
       }
     }
     if (!(umbrella > 0.0) || !std::isfinite(umbrella)) continue;

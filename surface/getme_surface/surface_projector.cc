@@ -47,6 +47,15 @@ struct SurfaceProjector::Trees {
   std::unique_ptr<LazyTriangles[]> groups;
   std::vector<TriangleGrid> group_grids;
   std::vector<aabb::SegmentSet> curves;
+
+  // The nearest point of group `group` to `point`: the grid's, where some triangle comes within
+  // `bound` (exact then), else the tree's (started from `near` if given).
+  Vec3 NearestOnGroup(int group, const Vec3& point, double bound, const Vec3* near) const {
+    if (const std::optional<Vec3> nearest = group_grids[group].NearestWithin(point, bound)) {
+      return *nearest;
+    }
+    return groups[group].Get().Nearest(point, near);
+  }
 };
 
 absl::StatusOr<SurfaceProjector> SurfaceProjector::Build(const Mesh& mesh,
@@ -81,12 +90,8 @@ SurfaceProjector& SurfaceProjector::operator=(SurfaceProjector&&) noexcept = def
 SurfaceProjector::~SurfaceProjector() = default;
 
 Vec3 SurfaceProjector::OnGroup(int group, const Vec3& point, const Vec3* near) const {
-  if (near != nullptr) {
-    const std::optional<Vec3> nearest =
-        trees_->group_grids[group].NearestWithin(point, (point - *near).norm());
-    if (nearest) return *nearest;
-  }
-  return trees_->groups[group].Get().Nearest(point, near);
+  if (near == nullptr) return trees_->groups[group].Get().Nearest(point);
+  return trees_->NearestOnGroup(group, point, (point - *near).norm(), near);
 }
 
 Vec3 SurfaceProjector::OnCurve(int curve, const Vec3& point, const Vec3* near) const {
@@ -111,13 +116,9 @@ double SurfaceProjector::DistanceToGroup(int group, const Vec3& point) const {
   const Trees::LazyTriangles& triangles = trees_->groups[group];
   if (triangles.set.items.empty()) return std::numeric_limits<double>::infinity();
   // The points asked about are sliding nodes, on the surface or within rounding of it: a grid
-  // search within a thousandth of a cell answers them exactly (no nearer point can lie outside
-  // the bound), and the tree answers the rest.
-  const TriangleGrid& grid = trees_->group_grids[group];
-  if (const std::optional<Vec3> nearest = grid.NearestWithin(point, 1e-3 * grid.cell_size())) {
-    return (*nearest - point).norm();
-  }
-  return (triangles.Get().Nearest(point) - point).norm();
+  // search within a thousandth of a cell answers them exactly, and the tree answers the rest.
+  const double bound = 1e-3 * trees_->group_grids[group].cell_size();
+  return (trees_->NearestOnGroup(group, point, bound, nullptr) - point).norm();
 }
 
 double SurfaceProjector::DistanceToCurve(int curve, const Vec3& point) const {

@@ -133,10 +133,15 @@ inline double Warpage(const ElementNodes<kType>& p) {
   return warpage;
 }
 
-// Combined criterion of Sec. 4.4: q_γ(E) = min(q(E), γ·(1 − w(E)/2)).
+// Combined criterion of Sec. 4.4: q_γ(E) = min(q(E), γ·(1 − w(E)/2)), from an element's mean
+// ratio and warpage (the sequential substep has the mean ratio already when it needs q_γ).
+inline double QualityGammaFrom(double quality, double warpage, double gamma) {
+  return std::min(quality, gamma * (1.0 - warpage / 2.0));
+}
+
 template <ElementType kType>
 inline double QualityGamma(const ElementNodes<kType>& p, double gamma) {
-  return std::min(MeanRatio<kType>(p), gamma * (1.0 - Warpage<kType>(p) / 2.0));
+  return QualityGammaFrom(MeanRatio<kType>(p), Warpage<kType>(p), gamma);
 }
 
 }  // namespace getme

@@ -197,7 +197,7 @@ double SequentialSubstep::QualityGammaOf(ElementId element, double quality) cons
   const double warpage = DispatchElementType(mesh_.type(element), [&]<ElementType kType>() {
     return Warpage<kType>(GatherNodes<kType>(mesh_, ids));
   });
-  return std::min(std::max(0.0, quality), params_.gamma * (1.0 - warpage / 2.0));
+  return QualityGammaFrom(std::max(0.0, quality), warpage, params_.gamma);
 }
 
 // Which elements a pick evaluates depends only on the mesh's connectivity and which nodes may move,
