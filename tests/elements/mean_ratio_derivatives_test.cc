@@ -16,6 +16,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -403,6 +404,62 @@ TYPED_TEST(MeanRatioDerivativesTest, InvariantUnderTranslationRotationAndScaling
     }
   }
   ::testing::Test::RecordProperty("worst_error_over_tolerance", Scientific(worst));
+}
+
+// The polish takes a node's derivatives from its elements turned so that the node comes first
+// (ElementTable::kSymmetryToFirst, element_passes.h). Each such turn must be a symmetry of the
+// element's cost: the turned element's cost, gradient and Hessian at node 0 equal the element's at
+// the node, to rounding (the same error model as the similarity test above), and validity is the
+// same. A permutation that is not a rotation of the regular element changes the node tetrahedra
+// and fails this. The pyramid has no such turns (its apex is not like its base nodes).
+TYPED_TEST(MeanRatioDerivativesTest, TurningTheNodeFirstKeepsCostAndDerivatives) {
+  constexpr ElementType kType = TypeParam::kType;
+  if constexpr (!HasFirstNodeSymmetry<kType>) {
+    static_assert(kType == ElementType::kPyramid);
+    GTEST_SKIP() << "no rotation takes a pyramid's apex to a base node";
+  } else {
+    constexpr int kNodes = ElementTable<kType>::kNodes;
+    UnitRandom random(2207 + TypeIndex(kType));
+    for (int node = 0; node < kNodes; ++node) {
+      const auto& symmetry = ElementTable<kType>::kSymmetryToFirst[node];
+      EXPECT_EQ(symmetry[0], node);
+      std::array<bool, kNodes> used{};
+      for (int k : symmetry) used[k] = true;
+      EXPECT_TRUE(std::all_of(used.begin(), used.end(), [](bool u) { return u; }))
+          << "kSymmetryToFirst[" << node << "] is not a permutation";
+    }
+    int invalid = 0;
+    for (int trial = 0; trial < kDerivativeTrials; ++trial) {
+      // The trial elements, and half as many again from the unit cube: invalid ones among them.
+      const ElementNodes<kType> p =
+          trial % 3 == 2 ? random.ElementInUnitCube<kType>() : TrialElement<kType>(random, trial);
+      const Points points = ToPoints<kType>(p);
+      const double cost = InverseMeanRatioCost<kType>(p);
+      for (int node = 0; node < kNodes; ++node) {
+        SCOPED_TRACE(::testing::Message() << "trial " << trial << ", node " << node);
+        ElementNodes<kType> turned;
+        for (int k = 0; k < kNodes; ++k) {
+          turned[k] = p[ElementTable<kType>::kSymmetryToFirst[node][k]];
+        }
+        const InverseMeanRatioHessianResult at_node = InverseMeanRatioHessian<kType>(p, node);
+        const InverseMeanRatioHessianResult first = InverseMeanRatioHessian<kType>(turned, 0);
+        if (!std::isfinite(cost)) {
+          ++invalid;
+          EXPECT_EQ(first.cost, kInfinity);
+          continue;
+        }
+        double magnitude = 0.0;
+        for (const Eigen::Vector3d& x : points) magnitude = std::max(magnitude, x.norm());
+        const double tolerance = kRoundingMargin * kEpsilon * std::max(1.0, magnitude) *
+                                 DeterminantCondition(kType, points);
+        const double d = BarrierDistance(kType, points, node);
+        EXPECT_LE(std::abs(first.cost / at_node.cost - 1.0), tolerance);
+        EXPECT_LE((first.gradient - at_node.gradient).norm() / (cost / d), tolerance);
+        EXPECT_LE((first.hessian - at_node.hessian).norm() / (cost / (d * d)), tolerance);
+      }
+    }
+    EXPECT_GT(invalid, 0);
+  }
 }
 
 // Def. 2 as a barrier: node t_0 of each node tetrahedron of a regular element moves straight

@@ -44,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "getme/elements/cube_root.h"
 #include "getme/elements/element_quality.h"
@@ -258,25 +259,135 @@ GETME_LANE_INLINE Point3<S> ByPosition(Mask at0, Mask at1, Mask at2, const Point
 
 }  // namespace internal
 
+namespace internal {
+
+// What the node tetrahedra of one element add up to, lane by lane: Σ 1/q_k, and the node's
+// Σ ∇(1/q_k) and Σ ∇²(1/q_k) over the node tetrahedra that hold it.
+template <typename S>
+struct HessianSums {
+  S sum;
+  Point3<S> gradient;
+  std::array<S, 6> hessian;
+  decltype(AllLanes<S>()) valid;
+};
+
+template <typename S>
+GETME_LANE_INLINE HessianSums<S> EmptyHessianSums() {
+  const S zero = Splat<S>(0.0);
+  HessianSums<S> sums{zero, {zero, zero, zero}, {}, AllLanes<S>()};
+  sums.hessian.fill(zero);
+  return sums;
+}
+
+// Node tetrahedron f's term of the cost: adds 1/q_k to the sum and its det's sign to the
+// validity, and returns a = 1/(3 δ^{2/3}) for the derivatives.
+template <typename S>
+GETME_LANE_INLINE S AddNodeTetCost(const NodeTetFrameOf<S>& f, HessianSums<S>& sums) {
+  sums.valid = Both(sums.valid, f.det_d > 0.0);
+  const S a = 1.0 / (3.0 * CubeRoot(f.det_s * f.det_s));
+  sums.sum += f.frobenius2 * a;
+  return a;
+}
+
+// ∇(1/q_k) and ∇²(1/q_k) of node tetrahedron f with respect to its node at the position whose
+// row of E W⁻¹ is b and whose ∂det D/∂p is ddet (see the top of this file).
+template <typename S>
+struct NodeTetDerivativesOf {
+  Point3<S> gradient;
+  std::array<S, 6> hessian;
+};
+
+template <ElementType kType, typename S>
+GETME_LANE_INLINE NodeTetDerivativesOf<S> NodeTetDerivatives(const NodeTetFrameOf<S>& f, const S& a,
+                                                             const Point3<S>& b,
+                                                             const Point3<S>& ddet) {
+  constexpr auto& w = ElementTable<kType>::kTargetInverse;
+  constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
+  const Point3<S> grad_n = 2.0 * (f.s0 * b.x + f.s1 * b.y + f.s2 * b.z);
+  const Point3<S> v = kDetWInverse * ddet;
+  const S n_over_det = f.frobenius2 / f.det_s;
+  NodeTetDerivativesOf<S> d;
+  d.gradient = a * (grad_n - ((2.0 / 3.0) * n_over_det) * v);
+  // ∇²(1/q) = a (2|b|² I − (2/(3δ)) (∇N vᵗ + v ∇Nᵗ) + (10/9)(N/δ²) v vᵗ).
+  const S diagonal = 2.0 * SquaredNorm(b);
+  const S cross_factor = 2.0 / (3.0 * f.det_s);
+  const S outer_factor = (10.0 / 9.0) * (n_over_det / f.det_s);
+  const std::array<S, 3> gn = {grad_n.x, grad_n.y, grad_n.z};
+  const std::array<S, 3> vv = {v.x, v.y, v.z};
+  int entry = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i; j < 3; ++j, ++entry) {
+      S term = outer_factor * (vv[i] * vv[j]) - cross_factor * (gn[i] * vv[j] + vv[i] * gn[j]);
+      if (i == j) term = diagonal + term;
+      d.hessian[entry] = a * term;
+    }
+  }
+  return d;
+}
+
+// The mean over the K node tetrahedra; +∞ cost and zero derivatives past the barrier.
+template <ElementType kType, typename S>
+GETME_LANE_INLINE InverseMeanRatioHessianOf<S> FinishHessian(const HessianSums<S>& sums) {
+  constexpr double kInverseTets = 1.0 / static_cast<double>(ElementTable<kType>::kNodeTets.size());
+  const S zero = Splat<S>(0.0);
+  const S infinity = Splat<S>(std::numeric_limits<double>::infinity());
+  InverseMeanRatioHessianOf<S> result;
+  result.cost = Select(sums.valid, sums.sum * kInverseTets, infinity);
+  result.gradient = {Select(sums.valid, sums.gradient.x * kInverseTets, zero),
+                     Select(sums.valid, sums.gradient.y * kInverseTets, zero),
+                     Select(sums.valid, sums.gradient.z * kInverseTets, zero)};
+  for (int k = 0; k < 6; ++k) {
+    result.hessian[k] = Select(sums.valid, sums.hessian[k] * kInverseTets, zero);
+  }
+  return result;
+}
+
+// Node tetrahedron kTet's terms when the node is the element's node 0, in every lane: whether
+// the tetrahedron holds it, and at which position, are constants, so the tetrahedra without it
+// cost only their term of the cost. The same operations, in the same order, as the lanes of
+// InverseMeanRatioHessianLanes whose node is 0, so the same bits.
+template <ElementType kType, std::size_t kTet, typename S>
+GETME_LANE_INLINE void AddNodeTetAtFirstNode(const LaneNodes<kType, S>& p, HessianSums<S>& sums) {
+  constexpr NodeTetIndices t = ElementTable<kType>::kNodeTets[kTet];
+  constexpr int m = t[0] == 0 ? 0 : t[1] == 0 ? 1 : t[2] == 0 ? 2 : t[3] == 0 ? 3 : -1;
+  const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
+  const S a = AddNodeTetCost(f, sums);
+  if constexpr (m >= 0) {
+    Point3<S> ddet;
+    if constexpr (m == 0) {
+      ddet = -1.0 * (f.d1xd2 + Cross(f.d2, f.d0) + Cross(f.d0, f.d1));
+    } else if constexpr (m == 1) {
+      ddet = f.d1xd2;
+    } else if constexpr (m == 2) {
+      ddet = Cross(f.d2, f.d0);
+    } else {
+      ddet = Cross(f.d0, f.d1);
+    }
+    const NodeTetDerivativesOf<S> d =
+        NodeTetDerivatives<kType, S>(f, a, TargetRow<kType, S>(m), ddet);
+    sums.gradient = sums.gradient + d.gradient;
+    for (int k = 0; k < 6; ++k) sums.hessian[k] = sums.hessian[k] + d.hessian[k];
+  }
+}
+
+template <ElementType kType, typename S, std::size_t... kTet>
+GETME_LANE_INLINE HessianSums<S> HessianSumsAtFirstNode(const LaneNodes<kType, S>& p,
+                                                        std::index_sequence<kTet...>) {
+  HessianSums<S> sums = EmptyHessianSums<S>();
+  (AddNodeTetAtFirstNode<kType, kTet, S>(p, sums), ...);
+  return sums;
+}
+
+}  // namespace internal
+
 template <ElementType kType, typename S, typename Node>
 GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianLanes(
     const LaneNodes<kType, S>& p, Node node) {
   using Table = ElementTable<kType>;
-  constexpr auto& w = Table::kTargetInverse;
-  constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
-  constexpr double kInverseTets = 1.0 / static_cast<double>(Table::kNodeTets.size());
-  const S zero = Splat<S>(0.0);
-  S sum = zero;
-  Point3<S> g{zero, zero, zero};
-  std::array<S, 6> h;
-  h.fill(zero);
-  auto valid = AllLanes<S>();
+  internal::HessianSums<S> sums = internal::EmptyHessianSums<S>();
   for (const auto& t : Table::kNodeTets) {
     const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
-    const auto& [d0, d1, d2, d1xd2, det_d, s0, s1, s2, det_s, frobenius2] = f;
-    valid = Both(valid, det_d > 0.0);
-    const S a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
-    sum += frobenius2 * a;
+    const S a = internal::AddNodeTetCost(f, sums);
     // Which position m of T_k the node has, lane by lane; b = row m of E W⁻¹ and ∂det D/∂p_{t_m}
     // (see the top of this file). A lane whose node is not in T_k adds nothing.
     const auto at0 = node == t[0];
@@ -285,42 +396,37 @@ GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianLanes(
     const auto at3 = node == t[3];
     const auto in_tet = Either(Either(at0, at1), Either(at2, at3));
     if (NoLane(in_tet)) continue;
-    const Point3<S> d2xd0 = Cross(d2, d0);
-    const Point3<S> d0xd1 = Cross(d0, d1);
-    const Point3<S> minus_all = -1.0 * (d1xd2 + d2xd0 + d0xd1);
+    const Point3<S> d2xd0 = Cross(f.d2, f.d0);
+    const Point3<S> d0xd1 = Cross(f.d0, f.d1);
+    const Point3<S> minus_all = -1.0 * (f.d1xd2 + d2xd0 + d0xd1);
     const Point3<S> b = internal::ByPosition(
         at0, at1, at2, internal::TargetRow<kType, S>(0), internal::TargetRow<kType, S>(1),
         internal::TargetRow<kType, S>(2), internal::TargetRow<kType, S>(3));
-    const Point3<S> ddet = internal::ByPosition(at0, at1, at2, minus_all, d1xd2, d2xd0, d0xd1);
-    const Point3<S> grad_n = 2.0 * (s0 * b.x + s1 * b.y + s2 * b.z);
-    const Point3<S> v = kDetWInverse * ddet;
-    const S n_over_det = frobenius2 / det_s;
-    const Point3<S> dg = a * (grad_n - ((2.0 / 3.0) * n_over_det) * v);
-    g = {Select(in_tet, g.x + dg.x, g.x), Select(in_tet, g.y + dg.y, g.y),
-         Select(in_tet, g.z + dg.z, g.z)};
-    // ∇²(1/q) = a (2|b|² I − (2/(3δ)) (∇N vᵗ + v ∇Nᵗ) + (10/9)(N/δ²) v vᵗ).
-    const S diagonal = 2.0 * SquaredNorm(b);
-    const S cross_factor = 2.0 / (3.0 * det_s);
-    const S outer_factor = (10.0 / 9.0) * (n_over_det / det_s);
-    const std::array<S, 3> gn = {grad_n.x, grad_n.y, grad_n.z};
-    const std::array<S, 3> vv = {v.x, v.y, v.z};
-    int entry = 0;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = i; j < 3; ++j, ++entry) {
-        S term = outer_factor * (vv[i] * vv[j]) - cross_factor * (gn[i] * vv[j] + vv[i] * gn[j]);
-        if (i == j) term = diagonal + term;
-        h[entry] = Select(in_tet, h[entry] + a * term, h[entry]);
-      }
+    const Point3<S> ddet = internal::ByPosition(at0, at1, at2, minus_all, f.d1xd2, d2xd0, d0xd1);
+    const internal::NodeTetDerivativesOf<S> d =
+        internal::NodeTetDerivatives<kType, S>(f, a, b, ddet);
+    const Point3<S>& g = sums.gradient;
+    sums.gradient = {Select(in_tet, g.x + d.gradient.x, g.x),
+                     Select(in_tet, g.y + d.gradient.y, g.y),
+                     Select(in_tet, g.z + d.gradient.z, g.z)};
+    for (int k = 0; k < 6; ++k) {
+      sums.hessian[k] = Select(in_tet, sums.hessian[k] + d.hessian[k], sums.hessian[k]);
     }
   }
-  const S infinity = Splat<S>(std::numeric_limits<double>::infinity());
-  InverseMeanRatioHessianOf<S> result;
-  result.cost = Select(valid, sum * kInverseTets, infinity);
-  result.gradient = {Select(valid, g.x * kInverseTets, zero),
-                     Select(valid, g.y * kInverseTets, zero),
-                     Select(valid, g.z * kInverseTets, zero)};
-  for (int k = 0; k < 6; ++k) result.hessian[k] = Select(valid, h[k] * kInverseTets, zero);
-  return result;
+  return internal::FinishHessian<kType>(sums);
+}
+
+// InverseMeanRatioHessianLanes with respect to node 0 in every lane, with the node tetrahedra
+// unrolled: a polish step turns each element so that its node comes first
+// (ElementTable::kSymmetryToFirst, element_passes.h). Bit for bit the same as
+// InverseMeanRatioHessianLanes(p, 0); on a hexahedron half the node tetrahedra skip their
+// derivatives, on a prism a third.
+template <ElementType kType, typename S>
+GETME_LANE_INLINE InverseMeanRatioHessianOf<S> InverseMeanRatioHessianAtFirstNode(
+    const LaneNodes<kType, S>& p) {
+  constexpr std::size_t kTets = ElementTable<kType>::kNodeTets.size();
+  return internal::FinishHessian<kType>(
+      internal::HessianSumsAtFirstNode<kType, S>(p, std::make_index_sequence<kTets>()));
 }
 
 // The one-element result in Eigen's types.

@@ -127,18 +127,36 @@ void CostAndQualityListPass(const ElementList& list, double* cost, double* quali
   }
 }
 
-// derivatives[i] = InverseMeanRatioHessianLanes of the list's element i with respect to its
-// local node node[i] (mean_ratio_derivatives.h): a polish step's elements, around its node.
+// derivatives[i] = the cost, gradient and Hessian of the list's element i with respect to its
+// local node node[i] (mean_ratio_derivatives.h): a polish step's elements, around its node. For
+// a tetrahedron, hexahedron or prism, those of the element turned so that the node is its node 0
+// (equal up to rounding); for a pyramid, InverseMeanRatioHessianLanes.
 template <ElementType kType, int kWidth>
 void HessianListPass(const ElementList& list, const int* node,
                      InverseMeanRatioHessianOf<double>* derivatives) {
   for (std::int64_t i = 0; i < list.count; i += kWidth) {
     const int count = static_cast<int>(std::min<std::int64_t>(kWidth, list.count - i));
-    LaneMaskOf<kWidth> lane_node{};
-    for (int l = 0; l < kWidth; ++l) lane_node[l] = node[i + std::min(l, count - 1)];
-    const InverseMeanRatioHessianOf<LanesOf<kWidth>> r =
-        InverseMeanRatioHessianLanes<kType, LanesOf<kWidth>>(
-            GatherListLanes<kType, kWidth>(list, i), lane_node);
+    InverseMeanRatioHessianOf<LanesOf<kWidth>> r;
+    if constexpr (HasFirstNodeSymmetry<kType>) {
+      // Each element turned so that its node comes first (element_tables.h): every lane then
+      // needs the same node tetrahedra's derivatives, and only those that hold node 0.
+      constexpr int kNodes = ElementTable<kType>::kNodes;
+      NodeId turned[kWidth][kNodes];
+      const NodeId* lane_nodes[kWidth];
+      for (int l = 0; l < kWidth; ++l) {
+        const std::int64_t entry = i + std::min(l, count - 1);
+        const auto& symmetry = ElementTable<kType>::kSymmetryToFirst[node[entry]];
+        for (int k = 0; k < kNodes; ++k) turned[l][k] = list.node_lists[entry][symmetry[k]];
+        lane_nodes[l] = turned[l];
+      }
+      r = InverseMeanRatioHessianAtFirstNode<kType, LanesOf<kWidth>>(
+          GatherLanes<kType, kWidth>(list.x, list.y, list.z, lane_nodes));
+    } else {
+      LaneMaskOf<kWidth> lane_node{};
+      for (int l = 0; l < kWidth; ++l) lane_node[l] = node[i + std::min(l, count - 1)];
+      r = InverseMeanRatioHessianLanes<kType, LanesOf<kWidth>>(
+          GatherListLanes<kType, kWidth>(list, i), lane_node);
+    }
     for (int l = 0; l < count; ++l) {
       InverseMeanRatioHessianOf<double>& out = derivatives[i + l];
       out.cost = r.cost[l];
