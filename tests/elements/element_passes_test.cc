@@ -138,6 +138,43 @@ TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
   EXPECT_GT(invalid, 10);
 }
 
+// The warpage pass (the measures a run reports before and after): the one-element Warpage's bits
+// in every lane, degenerate faces (warpage 2) included, and nothing outside the range written.
+TYPED_TEST(ElementPassesTest, WarpagePassGivesTheOneElementBitsAtEveryWidth) {
+  constexpr ElementType kType = TypeParam::kType;
+  const TestBlock<kType> block = MakeBlock<kType>();
+  const std::size_t n = block.elements.size();
+  int warped = 0;
+  int degenerate = 0;
+  ForEachWidth([&](const ElementPasses& passes, int lanes) {
+    for (const auto& [begin, end] : kRanges) {
+      std::vector<double> warpage(n, std::numeric_limits<double>::quiet_NaN());
+      passes.warpage[TypeIndex(kType)](block.Range(begin, end), warpage.data());
+      for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
+        const double written = warpage[block.IdOf(i)];
+        if (i < begin || i >= end) {
+          EXPECT_TRUE(std::isnan(written))
+              << "entry " << i << " outside [" << begin << ", " << end << ") was written";
+          continue;
+        }
+        const double expected = Warpage<kType>(block.elements[i]);
+        EXPECT_EQ(Bits(written), Bits(expected))
+            << "entry " << i << ": " << written << " vs " << expected;
+        if (lanes == 2 && begin == 0) {
+          warped += expected > 0.0 && expected < 2.0;
+          degenerate += expected == 2.0;
+        }
+      }
+    }
+  });
+  if constexpr (kType == ElementType::kTetrahedron) {
+    EXPECT_EQ(warped + degenerate, 0);  // no quad face
+  } else {
+    EXPECT_GT(warped, 100);
+    EXPECT_GE(degenerate, 1);  // the all-one-point element
+  }
+}
+
 // The list pass (a sequential pick's elements, anywhere in their block): every list length from
 // 1 to past the widest vector, in a scattered order with repeats, must write the one-element bits
 // into the list's own slots and nothing past them.

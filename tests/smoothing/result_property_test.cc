@@ -10,7 +10,9 @@
 #include <cmath>
 #include <random>
 
+#include "getme/mesh/mesh_quality.h"
 #include "getme/meshgen/hybrid_block.h"
+#include "getme/parallel/thread_pool.h"
 #include "getme/smoothing/smoother.h"
 #include "reference_quality.h"
 #include "smoothing_test_support.h"
@@ -101,6 +103,10 @@ TEST(ResultPropertyTest, EverySuccessIsValidKeepsFixedNodesAndReportsItsOwnQuali
     }
     const std::vector<NodeId> immovable = testing::ImmovableNodes(mesh, c.params);
     const testing::CoordinateSnapshot before(mesh);
+    // The engine takes its before-and-after measures with its vector passes: they must be the
+    // bits of the one-element MeasureElements, quality, warpage and validity alike.
+    ThreadPool pool(2);
+    const MeshQuality input_quality = EvaluateMeshQuality(mesh, pool);
 
     auto result = Smooth(mesh, c.params);
     if (!result.ok()) {
@@ -110,6 +116,27 @@ TEST(ResultPropertyTest, EverySuccessIsValidKeepsFixedNodesAndReportsItsOwnQuali
       continue;
     }
     ++successes;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(result->before.q_min),
+              std::bit_cast<std::uint64_t>(input_quality.q_min));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(result->before.q_mean),
+              std::bit_cast<std::uint64_t>(input_quality.q_mean));
+    EXPECT_EQ(result->before.invalid, input_quality.invalid);
+    EXPECT_EQ(result->before.first_invalid, input_quality.first_invalid);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(result->before.warpage_max),
+              std::bit_cast<std::uint64_t>(input_quality.warpage_max));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(result->before.warpage_mean),
+              std::bit_cast<std::uint64_t>(input_quality.warpage_mean));
+    EXPECT_EQ(result->before.histogram, input_quality.histogram);
+    const ElementMeasures measured = MeasureElements(mesh, pool);
+    for (ElementId e = 0; e < mesh.element_count(); ++e) {
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(result->after_elements.quality[e]),
+                std::bit_cast<std::uint64_t>(measured.quality[e]))
+          << "element " << e;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(result->after_elements.warpage[e]),
+                std::bit_cast<std::uint64_t>(measured.warpage[e]))
+          << "element " << e;
+      ASSERT_EQ(result->after_elements.valid[e], measured.valid[e]) << "element " << e;
+    }
     for (NodeId n : immovable) {
       ASSERT_EQ(std::bit_cast<std::uint64_t>(mesh.x()[n]),
                 std::bit_cast<std::uint64_t>(before.x[n]));

@@ -133,6 +133,44 @@ inline double Warpage(const ElementNodes<kType>& p) {
   return warpage;
 }
 
+// QuadWarpage over lanes (lanes.h), for the whole-mesh warpage pass (element_passes.h,
+// WarpagePass): the same operations in the same order, with Point3's Eigen-ordered sums, so every
+// lane has QuadWarpage's bits for its face (element_passes_test.cc). A lane with a degenerate
+// corner computes on with a zero division and is replaced by 2 at the end.
+template <typename S>
+GETME_LANE_INLINE S QuadWarpageOf(const std::array<Point3<S>, 4>& q) {
+  auto valid = AllLanes<S>();
+  std::array<Point3<S>, 4> n;
+  for (int k = 0; k < 4; ++k) {
+    const Point3<S>& prev = q[(k + 3) % 4];
+    const Point3<S>& next = q[(k + 1) % 4];
+    n[k] = Cross(q[k] - prev, next - q[k]);
+    const S length = Norm(n[k]);
+    valid = Both(valid, length > 0.0);
+    n[k] = n[k] / length;
+  }
+  const S c02 = Dot(n[0], n[2]);
+  const S c13 = Dot(n[1], n[3]);
+  const S cube02 = c02 * c02 * c02;
+  const S cube13 = c13 * c13 * c13;
+  // 1 − std::min(cube02, cube13), lane by lane.
+  const S warpage = 1.0 - Select(cube13 < cube02, cube13, cube02);
+  return Select(valid, warpage, Splat<S>(2.0));
+}
+
+// Warpage over lanes: the maximum over the quad faces as Warpage takes it; 0 for a tetrahedron.
+template <ElementType kType, typename S>
+GETME_LANE_INLINE S WarpageOf(const LaneNodes<kType, S>& p) {
+  S warpage = Splat<S>(0.0);
+  for (const auto& face : ElementTable<kType>::kFaces) {
+    if (face.size != 4) continue;
+    const auto& f = face.nodes;
+    const S face_warpage = QuadWarpageOf<S>({p[f[0]], p[f[1]], p[f[2]], p[f[3]]});
+    warpage = Select(warpage < face_warpage, face_warpage, warpage);  // std::max, lane by lane
+  }
+  return warpage;
+}
+
 // Combined criterion of Sec. 4.4: q_γ(E) = min(q(E), γ·(1 − w(E)/2)), from an element's mean
 // ratio and warpage (the sequential substep has the mean ratio already when it needs q_γ).
 inline double QualityGammaFrom(double quality, double warpage, double gamma) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "getme/elements/element_quality.h"
 #include "getme/elements/vec3.h"
@@ -76,6 +77,20 @@ ElementMeasures MeasureElements(const Mesh& mesh, ThreadPool& pool) {
                            measures.valid[e] = q != kInvalidQuality ? 1 : 0;
                            measures.warpage[e] = Warpage<kType>(nodes);
                          });
+  return measures;
+}
+
+ElementMeasures MeasuresFrom(std::span<const double> mean_ratio_or_invalid,
+                             std::vector<double> warpage) {
+  ElementMeasures measures;
+  measures.quality.resize(mean_ratio_or_invalid.size());
+  measures.valid.resize(mean_ratio_or_invalid.size());
+  for (std::size_t e = 0; e < mean_ratio_or_invalid.size(); ++e) {
+    const double q = mean_ratio_or_invalid[e];
+    measures.quality[e] = std::max(0.0, q);
+    measures.valid[e] = q != kInvalidQuality ? 1 : 0;
+  }
+  measures.warpage = std::move(warpage);
   return measures;
 }
 

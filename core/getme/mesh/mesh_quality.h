@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "getme/elements/element_type.h"
@@ -45,6 +46,11 @@ struct ElementMeasures {
 };
 // All three in one pass: each element's nodes are gathered once, not once per measure.
 ElementMeasures MeasureElements(const Mesh& mesh, ThreadPool& pool);
+// The same from measures already taken, e.g. by the smoother's vector passes with the same bits:
+// `mean_ratio_or_invalid[e]` is MeanRatioOrInvalid of element e (element_quality.h;
+// kInvalidQuality where invalid) and `warpage[e]` its Warpage.
+ElementMeasures MeasuresFrom(std::span<const double> mean_ratio_or_invalid,
+                             std::vector<double> warpage);
 
 // Per-element mean ratio (0 for invalid elements), indexed by global element id.
 void ComputeElementQualities(const Mesh& mesh, ThreadPool& pool, std::vector<double>& quality);

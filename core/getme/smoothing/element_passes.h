@@ -82,6 +82,20 @@ void MeanRatioPass(const BlockRange& range, double* quality) {
   }
 }
 
+// warpage[range.elements[i]] = Warpage of entry i (element_quality.h): the measures a run reports
+// before and after (smoother.cc), where the warpage of every hexahedron's six faces, one element
+// at a time, cost more than the mean ratio.
+template <ElementType kType, int kWidth>
+void WarpagePass(const BlockRange& range, double* warpage) {
+  constexpr int kNodes = ElementTable<kType>::kNodes;
+  for (std::int64_t i = range.begin; i < range.end; i += kWidth) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, range.end - i));
+    const LanesOf<kWidth> w = WarpageOf<kType, LanesOf<kWidth>>(
+        GatherLanes<kType, kWidth>(range.x, range.y, range.z, range.nodes + i * kNodes, count));
+    for (int l = 0; l < count; ++l) warpage[range.elements[i + l]] = w[l];
+  }
+}
+
 // A list of elements of one type, anywhere in their block: the elements a sequential pick
 // evaluates (Sec. 3.2, Step 3.1).
 struct ElementList {

@@ -42,6 +42,11 @@ template <ElementType kType>
 }
 
 template <ElementType kType>
+[[gnu::flatten]] void WarpageOfRange(const BlockRange& range, double* warpage) {
+  WarpagePass<kType, kTargetLanes>(range, warpage);
+}
+
+template <ElementType kType>
 [[gnu::flatten]] void ScatterTransformOfRange(const BlockRange& range,
                                               const TransformPassSettings& settings) {
   ScatterTransformPass<kType, kTargetLanes>(range, settings);
@@ -81,6 +86,8 @@ const ElementPasses kTargetPasses = {
     kTargetLanes,
     {&MeanRatioOfRange<ElementType::kTetrahedron>, &MeanRatioOfRange<ElementType::kHexahedron>,
      &MeanRatioOfRange<ElementType::kPyramid>, &MeanRatioOfRange<ElementType::kPrism>},
+    {&WarpageOfRange<ElementType::kTetrahedron>, &WarpageOfRange<ElementType::kHexahedron>,
+     &WarpageOfRange<ElementType::kPyramid>, &WarpageOfRange<ElementType::kPrism>},
     {&ScatterTransformOfRange<ElementType::kTetrahedron>,
      &ScatterTransformOfRange<ElementType::kHexahedron>,
      &ScatterTransformOfRange<ElementType::kPyramid>,
@@ -115,6 +122,9 @@ const ElementPasses kReferencePasses = {
     {&MeanRatioPass<ElementType::kTetrahedron, kLanes>,
      &MeanRatioPass<ElementType::kHexahedron, kLanes>,
      &MeanRatioPass<ElementType::kPyramid, kLanes>, &MeanRatioPass<ElementType::kPrism, kLanes>},
+    {&WarpagePass<ElementType::kTetrahedron, kLanes>,
+     &WarpagePass<ElementType::kHexahedron, kLanes>, &WarpagePass<ElementType::kPyramid, kLanes>,
+     &WarpagePass<ElementType::kPrism, kLanes>},
     {&ScatterTransformPass<ElementType::kTetrahedron, kLanes>,
      &ScatterTransformPass<ElementType::kHexahedron, kLanes>,
      &ScatterTransformPass<ElementType::kPyramid, kLanes>,

@@ -20,6 +20,7 @@ struct ElementPasses {
   int lanes = 0;
   // Indexed by TypeIndex.
   std::array<void (*)(const BlockRange&, double* quality), kElementTypeCount> mean_ratio{};
+  std::array<void (*)(const BlockRange&, double* warpage), kElementTypeCount> warpage{};
   std::array<void (*)(const BlockRange&, const TransformPassSettings&), kElementTypeCount>
       scatter_transform{};
   std::array<void (*)(const ElementList&, double* quality), kElementTypeCount> mean_ratio_list{};

@@ -188,8 +188,10 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
   SmoothingResult result;
   result.threads = pool.thread_count();
   result.kernel_lanes = (*passes)->lanes;
-  result.before = EvaluateMeshQuality(mesh, pool);
   SmoothingContext context(mesh, params, pool, progress, cancel, slide);
+  // The measures MeasureElements takes one element at a time, with the same bits from the vector
+  // passes: the context has just taken every element's mean ratio.
+  result.before = SummarizeMeasures(mesh, MeasuresFrom(context.quality, context.Warpages()), pool);
   // Untangling with untangle_free_boundary may move boundary nodes of invalid elements: the check
   // must expect exactly those to move, and no other immovable node.
   const bool untangles =
@@ -228,7 +230,10 @@ absl::StatusOr<SmoothingResult> Smooth(Mesh& mesh, const SmoothingParams& params
     }
     result.boundary_slide = summary;
   }
-  result.after_elements = MeasureElements(mesh, pool);
+  // Fresh mean ratios of the final state from the vector passes: the phases keep
+  // context.quality up to date, but a measure reported to the user is taken anew.
+  context.RefreshQuality();
+  result.after_elements = MeasuresFrom(context.quality, context.Warpages());
   result.after = SummarizeMeasures(mesh, result.after_elements, pool);
   result.seconds = context.ElapsedSeconds();
   if (params.method == Method::kLaplace && result.after.invalid > 0) {

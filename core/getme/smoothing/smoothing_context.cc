@@ -73,6 +73,18 @@ void SmoothingContext::RefreshQuality() {
       });
 }
 
+std::vector<double> SmoothingContext::Warpages() const {
+  std::vector<double> warpage(mesh.element_count());
+  ParallelForEachBlock(
+      mesh, pool,
+      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
+        passes.warpage[TypeIndex(kType)](
+            {mesh.x(), mesh.y(), mesh.z(), block.nodes.data(), block.elements.data(), begin, end},
+            warpage.data());
+      });
+  return warpage;
+}
+
 void SmoothingContext::NodeListsOf(std::span<const ElementId> elements,
                                    std::vector<const NodeId*>& node_lists) const {
   node_lists.resize(elements.size());

@@ -72,6 +72,8 @@ struct SmoothingContext {
   }
   // Recomputes `quality` for the whole mesh.
   void RefreshQuality();
+  // Every element's warpage (Sec. 4.4), by element id, from the vector passes.
+  std::vector<double> Warpages() const;
   // node_lists[i] = elements[i]'s node ids, for QualitiesOf.
   void NodeListsOf(std::span<const ElementId> elements,
                    std::vector<const NodeId*>& node_lists) const;
