@@ -15,12 +15,15 @@
 
 namespace getme {
 
+// A pass over a block range that writes one number per element (by element id), per type.
+using WholeMeshPass = std::array<void (*)(const BlockRange&, double* out), kElementTypeCount>;
+
 struct ElementPasses {
   // The whole-mesh passes' width; the list passes take at most 4 (element_passes_dispatch.cc).
   int lanes = 0;
   // Indexed by TypeIndex.
-  std::array<void (*)(const BlockRange&, double* quality), kElementTypeCount> mean_ratio{};
-  std::array<void (*)(const BlockRange&, double* warpage), kElementTypeCount> warpage{};
+  WholeMeshPass mean_ratio{};  // MeanRatioOrInvalid
+  WholeMeshPass warpage{};     // Warpage (Sec. 4.4)
   std::array<void (*)(const BlockRange&, const TransformPassSettings&), kElementTypeCount>
       scatter_transform{};
   std::array<void (*)(const ElementList&, double* quality), kElementTypeCount> mean_ratio_list{};

@@ -60,28 +60,30 @@ double SmoothingContext::ElapsedSeconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace {
+
+// out[e] = the pass's number for every element e, block by block on the pool: passes.lanes
+// elements at a time, with the same bits as one at a time (element_passes.h).
+void RunWholeMeshPass(const Mesh& mesh, ThreadPool& pool, const WholeMeshPass& pass, double* out) {
+  ParallelForEachBlock(
+      mesh, pool,
+      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
+        pass[TypeIndex(kType)](
+            {mesh.x(), mesh.y(), mesh.z(), block.nodes.data(), block.elements.data(), begin, end},
+            out);
+      });
+}
+
+}  // namespace
+
 void SmoothingContext::RefreshQuality() {
   quality.resize(mesh.element_count());
-  const Mesh& m = mesh;
-  // passes.lanes elements at a time: the same bits as one at a time (element_passes.h).
-  ParallelForEachBlock(
-      m, pool,
-      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
-        passes.mean_ratio[TypeIndex(kType)](
-            {m.x(), m.y(), m.z(), block.nodes.data(), block.elements.data(), begin, end},
-            quality.data());
-      });
+  RunWholeMeshPass(mesh, pool, passes.mean_ratio, quality.data());
 }
 
 std::vector<double> SmoothingContext::Warpages() const {
   std::vector<double> warpage(mesh.element_count());
-  ParallelForEachBlock(
-      mesh, pool,
-      [&]<ElementType kType>(const ElementBlock& block, std::int64_t begin, std::int64_t end) {
-        passes.warpage[TypeIndex(kType)](
-            {mesh.x(), mesh.y(), mesh.z(), block.nodes.data(), block.elements.data(), begin, end},
-            warpage.data());
-      });
+  RunWholeMeshPass(mesh, pool, passes.warpage, warpage.data());
   return warpage;
 }
 
