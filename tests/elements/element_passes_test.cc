@@ -110,63 +110,58 @@ template <typename Tag>
 class ElementPassesTest : public ::testing::Test {};
 TYPED_TEST_SUITE(ElementPassesTest, AllElementTypes, ElementTypeName);
 
-TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
-  constexpr ElementType kType = TypeParam::kType;
+// Runs the whole-mesh pass `pass_of(passes)` (one number per element) over every range of
+// kRanges at every width: every entry inside the range must get expected(element)'s bits, and no
+// entry outside it may be written. Calls count(expected) once per element, at 2 lanes over the
+// whole block.
+template <ElementType kType, typename PassOf, typename Expected, typename Count>
+void CheckWholeMeshPass(const PassOf& pass_of, const Expected& expected_of, const Count& count) {
   const TestBlock<kType> block = MakeBlock<kType>();
   const std::size_t n = block.elements.size();
-  int invalid = 0;
   ForEachWidth([&](const ElementPasses& passes, int lanes) {
     ASSERT_EQ(passes.lanes, lanes);
     for (const auto& [begin, end] : kRanges) {
-      std::vector<double> quality(n, std::numeric_limits<double>::quiet_NaN());
-      passes.mean_ratio[TypeIndex(kType)](block.Range(begin, end), quality.data());
+      std::vector<double> out(n, std::numeric_limits<double>::quiet_NaN());
+      pass_of(passes)[TypeIndex(kType)](block.Range(begin, end), out.data());
       for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
-        const double written = quality[block.IdOf(i)];
+        const double written = out[block.IdOf(i)];
         if (i < begin || i >= end) {
           EXPECT_TRUE(std::isnan(written))
               << "entry " << i << " outside [" << begin << ", " << end << ") was written";
           continue;
         }
-        const double expected = MeanRatioOrInvalid<kType>(block.elements[i]);
+        const double expected = expected_of(block.elements[i]);
         EXPECT_EQ(Bits(written), Bits(expected))
             << "entry " << i << ": " << written << " vs " << expected;
-        if (lanes == 2 && begin == 0 && expected == kInvalidQuality) ++invalid;
+        if (lanes == 2 && begin == 0) count(expected);
       }
     }
   });
+}
+
+TYPED_TEST(ElementPassesTest, MeanRatioPassGivesTheOneElementBitsAtEveryWidth) {
+  constexpr ElementType kType = TypeParam::kType;
+  int invalid = 0;
+  CheckWholeMeshPass<kType>(
+      [](const ElementPasses& passes) { return passes.mean_ratio; },
+      [](const ElementNodes<kType>& nodes) { return MeanRatioOrInvalid<kType>(nodes); },
+      [&](double expected) { invalid += expected == kInvalidQuality; });
   // The random elements include invalid ones, so the validity lanes were exercised too.
   EXPECT_GT(invalid, 10);
 }
 
 // The warpage pass (the measures a run reports before and after): the one-element Warpage's bits
-// in every lane, degenerate faces (warpage 2) included, and nothing outside the range written.
+// in every lane, degenerate faces (warpage 2) included.
 TYPED_TEST(ElementPassesTest, WarpagePassGivesTheOneElementBitsAtEveryWidth) {
   constexpr ElementType kType = TypeParam::kType;
-  const TestBlock<kType> block = MakeBlock<kType>();
-  const std::size_t n = block.elements.size();
   int warped = 0;
   int degenerate = 0;
-  ForEachWidth([&](const ElementPasses& passes, int lanes) {
-    for (const auto& [begin, end] : kRanges) {
-      std::vector<double> warpage(n, std::numeric_limits<double>::quiet_NaN());
-      passes.warpage[TypeIndex(kType)](block.Range(begin, end), warpage.data());
-      for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
-        const double written = warpage[block.IdOf(i)];
-        if (i < begin || i >= end) {
-          EXPECT_TRUE(std::isnan(written))
-              << "entry " << i << " outside [" << begin << ", " << end << ") was written";
-          continue;
-        }
-        const double expected = Warpage<kType>(block.elements[i]);
-        EXPECT_EQ(Bits(written), Bits(expected))
-            << "entry " << i << ": " << written << " vs " << expected;
-        if (lanes == 2 && begin == 0) {
-          warped += expected > 0.0 && expected < 2.0;
-          degenerate += expected == 2.0;
-        }
-      }
-    }
-  });
+  CheckWholeMeshPass<kType>([](const ElementPasses& passes) { return passes.warpage; },
+                            [](const ElementNodes<kType>& nodes) { return Warpage<kType>(nodes); },
+                            [&](double expected) {
+                              warped += expected > 0.0 && expected < 2.0;
+                              degenerate += expected == 2.0;
+                            });
   if constexpr (kType == ElementType::kTetrahedron) {
     EXPECT_EQ(warped + degenerate, 0);  // no quad face
   } else {

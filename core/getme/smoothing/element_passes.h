@@ -70,30 +70,44 @@ GETME_LANE_INLINE S WeightOfElement(S defect, double eta) {
   }
 }
 
-// quality[element] = MeanRatioOrInvalid of every element of the range.
-template <ElementType kType, int kWidth>
-void MeanRatioPass(const BlockRange& range, double* quality) {
+// The per-element numbers of the whole-mesh passes below, over lanes.
+struct MeanRatioMeasure {
+  template <ElementType kType, typename S>
+  GETME_LANE_INLINE static S Of(const LaneNodes<kType, S>& p) {
+    return MeanRatioOrInvalid<kType, S>(p);
+  }
+};
+struct WarpageMeasure {
+  template <ElementType kType, typename S>
+  GETME_LANE_INLINE static S Of(const LaneNodes<kType, S>& p) {
+    return WarpageOf<kType, S>(p);
+  }
+};
+
+// out[range.elements[i]] = Measure::Of entry i, kWidth entries at a time.
+template <ElementType kType, int kWidth, typename Measure>
+GETME_LANE_INLINE void PerElementPass(const BlockRange& range, double* out) {
   constexpr int kNodes = ElementTable<kType>::kNodes;
   for (std::int64_t i = range.begin; i < range.end; i += kWidth) {
     const int count = static_cast<int>(std::min<std::int64_t>(kWidth, range.end - i));
-    const LanesOf<kWidth> q = MeanRatioOrInvalid<kType, LanesOf<kWidth>>(
+    const LanesOf<kWidth> value = Measure::template Of<kType, LanesOf<kWidth>>(
         GatherLanes<kType, kWidth>(range.x, range.y, range.z, range.nodes + i * kNodes, count));
-    for (int l = 0; l < count; ++l) quality[range.elements[i + l]] = q[l];
+    for (int l = 0; l < count; ++l) out[range.elements[i + l]] = value[l];
   }
 }
 
-// warpage[range.elements[i]] = Warpage of entry i (element_quality.h): the measures a run reports
-// before and after (smoother.cc), where the warpage of every hexahedron's six faces, one element
-// at a time, cost more than the mean ratio.
+// quality[element] = MeanRatioOrInvalid of every element of the range.
+template <ElementType kType, int kWidth>
+void MeanRatioPass(const BlockRange& range, double* quality) {
+  PerElementPass<kType, kWidth, MeanRatioMeasure>(range, quality);
+}
+
+// warpage[element] = Warpage of every element of the range (element_quality.h): the measures a
+// run reports before and after (smoother.cc), where the warpage of every hexahedron's six faces,
+// one element at a time, cost more than the mean ratio.
 template <ElementType kType, int kWidth>
 void WarpagePass(const BlockRange& range, double* warpage) {
-  constexpr int kNodes = ElementTable<kType>::kNodes;
-  for (std::int64_t i = range.begin; i < range.end; i += kWidth) {
-    const int count = static_cast<int>(std::min<std::int64_t>(kWidth, range.end - i));
-    const LanesOf<kWidth> w = WarpageOf<kType, LanesOf<kWidth>>(
-        GatherLanes<kType, kWidth>(range.x, range.y, range.z, range.nodes + i * kNodes, count));
-    for (int l = 0; l < count; ++l) warpage[range.elements[i + l]] = w[l];
-  }
+  PerElementPass<kType, kWidth, WarpageMeasure>(range, warpage);
 }
 
 // A list of elements of one type, anywhere in their block: the elements a sequential pick
