@@ -62,6 +62,16 @@ std::vector<double> ComputeElementWarpages(const Mesh& mesh, ThreadPool& pool) {
   return warpage;
 }
 
+namespace {
+
+// Element e's quality (invalid counted as 0) and validity from its MeanRatioOrInvalid.
+void SetQualityAndValidity(ElementMeasures& measures, std::size_t e, double mean_ratio_or_invalid) {
+  measures.quality[e] = std::max(0.0, mean_ratio_or_invalid);
+  measures.valid[e] = mean_ratio_or_invalid != kInvalidQuality ? 1 : 0;
+}
+
+}  // namespace
+
 ElementMeasures MeasureElements(const Mesh& mesh, ThreadPool& pool) {
   ElementMeasures measures;
   const auto count = static_cast<std::size_t>(mesh.element_count());
@@ -72,9 +82,7 @@ ElementMeasures MeasureElements(const Mesh& mesh, ThreadPool& pool) {
                          [&]<ElementType kType>(ElementId e, const ElementNodes<kType>& nodes) {
                            // Validity from the same node tetrahedra as the mean ratio (the
                            // determinants IsValid takes, to the bit), so they are formed once.
-                           const double q = MeanRatioOrInvalid<kType>(nodes);
-                           measures.quality[e] = std::max(0.0, q);
-                           measures.valid[e] = q != kInvalidQuality ? 1 : 0;
+                           SetQualityAndValidity(measures, e, MeanRatioOrInvalid<kType>(nodes));
                            measures.warpage[e] = Warpage<kType>(nodes);
                          });
   return measures;
@@ -86,9 +94,7 @@ ElementMeasures MeasuresFrom(std::span<const double> mean_ratio_or_invalid,
   measures.quality.resize(mean_ratio_or_invalid.size());
   measures.valid.resize(mean_ratio_or_invalid.size());
   for (std::size_t e = 0; e < mean_ratio_or_invalid.size(); ++e) {
-    const double q = mean_ratio_or_invalid[e];
-    measures.quality[e] = std::max(0.0, q);
-    measures.valid[e] = q != kInvalidQuality ? 1 : 0;
+    SetQualityAndValidity(measures, e, mean_ratio_or_invalid[e]);
   }
   measures.warpage = std::move(warpage);
   return measures;
