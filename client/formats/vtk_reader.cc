@@ -25,6 +25,7 @@ namespace getme::formats {
 namespace {
 
 constexpr absl::string_view kHeaderPrefix = "# vtk DataFile Version";
+constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
 
 // VTK writes spaces and other special characters of array names as %XX.
 std::string DecodeName(absl::string_view encoded) {
@@ -295,6 +296,12 @@ class Parser {
       const std::int64_t value = DecodeBigEndianInteger(bytes->data(), type);
       return value;
     }
+    const std::int64_t max = info.max > static_cast<std::uint64_t>(kMaxInt64)
+                                 ? kMaxInt64
+                                 : static_cast<std::int64_t>(info.max);
+    if (const std::optional<std::int64_t> plain = scanner_.NextPlainInteger(info.min, max)) {
+      return *plain;
+    }
     const std::optional<absl::string_view> token = scanner_.NextToken();
     std::optional<std::int64_t> value;
     if (token) value = ParseIntegerToken(*token, type);
@@ -322,6 +329,7 @@ class Parser {
       }
       return DecodeBigEndianReal(bytes->data(), type);
     }
+    if (const std::optional<double> plain = scanner_.NextPlainReal()) return *plain;
     const std::optional<absl::string_view> token = scanner_.NextToken();
     std::optional<double> value;
     if (token) value = ParseRealToken(*token);

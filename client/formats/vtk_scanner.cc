@@ -3,14 +3,6 @@
 #include "absl/strings/str_cat.h"
 
 namespace getme::formats {
-namespace {
-
-bool IsSpace(char c) {
-  return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\f' || c == '\v';
-}
-
-}  // namespace
-
 std::string VtkLocation::ToString() const {
   return absl::StrCat(is_byte_offset ? "byte " : "line ", value);
 }
@@ -63,13 +55,6 @@ std::optional<absl::string_view> VtkScanner::TakeBytes(std::size_t count) {
   const absl::string_view block = bytes_.substr(pos_, count);
   pos_ += count;
   return block;
-}
-
-void VtkScanner::SkipWhitespace() {
-  while (pos_ < bytes_.size() && IsSpace(bytes_[pos_])) {
-    if (bytes_[pos_] == '\n') ++line_;
-    ++pos_;
-  }
 }
 
 }  // namespace getme::formats

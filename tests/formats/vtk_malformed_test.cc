@@ -1,8 +1,10 @@
 // Malformed input gives InvalidArgument naming the line (ASCII) or byte offset and section
 // (BINARY) — and never crashes, whatever the damage.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "formats/vtk_reader.h"
@@ -161,6 +163,46 @@ TEST(VtkMalformed, IntegerOutOfTypeRange) {
   EXPECT_EQ(ParseError(text),
             "line 17: SCALARS fixed: value 2 of 4 is '256'; expected an integer of type "
             "unsigned_char in [0, 255]");
+}
+
+// Every form std::from_chars reads (with at most one leading '+') is a value, whether the
+// scanner's plain-number fast path takes it (VtkScanner::NextPlainInteger, NextPlainReal) or
+// hands it to the general parse: a sign, leading zeros, more than 18 digits, exponents.
+TEST(VtkValueForms, SignsZerosAndLongNumbersReadAsTheirValues) {
+  std::string text = Replace(kTet, "1 0 0\n0 1 0", "+1 0.0 -0\n0 1e0 +0.0");
+  text = Replace(text, "4 0 1 2 3", "+4 0 001 +2 3");
+  text = Replace(text, "SCALARS fixed int 1", "SCALARS fixed long 1");
+  text = Replace(text, "1 1 1 0", "-0 +7 0000000000000000000000009 -9223372036854775808");
+  const absl::StatusOr<UnstructuredGrid> file = ParseVtk(text);
+  ASSERT_TRUE(file.ok()) << file.status();
+  EXPECT_EQ(file->points.reals, (std::vector<double>{0, 0, 0, 1, 0, -0.0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(file->cells.connectivity, (std::vector<std::int64_t>{0, 1, 2, 3}));
+  ASSERT_EQ(file->point_data.size(), 1u);
+  EXPECT_EQ(file->point_data[0].arrays[0].integers,
+            (std::vector<std::int64_t>{0, 7, 9, std::numeric_limits<std::int64_t>::min()}));
+}
+
+// The fast path declines what it cannot judge, so the general parse names it as before.
+TEST(VtkValueForms, FormsTheFastPathDeclinesAreReportedAsBefore) {
+  const std::string unsigned_fixed =
+      Replace(kTet, "SCALARS fixed int 1", "SCALARS fixed unsigned_long 1");
+  const absl::StatusOr<UnstructuredGrid> wide =
+      ParseVtk(Replace(unsigned_fixed, "1 1 1 0", "18446744073709551615 +1 -0 0"));
+  EXPECT_FALSE(wide.ok());  // "-0" is no unsigned 64-bit value for from_chars
+  EXPECT_THAT(std::string(wide.status().message()),
+              ::testing::HasSubstr("line 17: SCALARS fixed: value 3 of 4 is '-0'"));
+  const absl::StatusOr<UnstructuredGrid> largest =
+      ParseVtk(Replace(unsigned_fixed, "1 1 1 0", "18446744073709551615 +1 0 0"));
+  ASSERT_TRUE(largest.ok()) << largest.status();
+  EXPECT_EQ(largest->point_data[0].arrays[0].integers[0], -1);  // stored bit-cast
+  EXPECT_EQ(ParseError(Replace(kTet, "4 0 1 2 3", "4 0 1 2 3x")),
+            "line 11: CELLS: value 5 of 5 is '3x'; expected an integer of type int in "
+            "[-2147483648, 2147483647]");
+  EXPECT_EQ(ParseError(Replace(kTet, "4 0 1 2 3", "4 0 1 2 2147483648")),
+            "line 11: CELLS: value 5 of 5 is '2147483648'; expected an integer of type int in "
+            "[-2147483648, 2147483647]");
+  EXPECT_EQ(ParseError(Replace(kTet, "0 1 0\n", "0 1..5 0\n")),
+            "line 8: POINTS: value 8 of 12 is '1..5'; expected a number");
 }
 
 TEST(VtkMalformed, UnknownDataType) {

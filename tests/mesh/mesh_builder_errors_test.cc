@@ -7,9 +7,11 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "absl/strings/str_cat.h"
 #include "getme/mesh/mesh.h"
 #include "getme/mesh/mesh_quality.h"
 #include "getme/parallel/thread_pool.h"
@@ -157,6 +159,84 @@ TEST(MeshBuilderErrors, FaceOfThreeElementsNamesTheFaceAndTheElements) {
   EXPECT_THAT(Message(mesh), AllOf(HasSubstr("face with nodes {0, 1, 2} belongs to 3 elements"),
                                    HasSubstr("(0 (tetrahedron), 1 (tetrahedron), 2 (tetrahedron))"),
                                    HasSubstr("overlap")));
+}
+
+// The same overlap twice, the face with the higher node ids added first: the error names the
+// face with the lowest ids, whatever order the boundary search meets them in.
+TEST(MeshBuilderErrors, OfTwoOverlapsTheFaceWithTheLowestNodeIdsIsNamed) {
+  MeshBuilder builder;
+  for (const double shift : {0.0, 5.0}) {
+    for (const auto& p : std::vector<std::array<double, 3>>{
+             {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1}, {0.3, 0.3, -1}, {0.2, 0.2, 0.5}}) {
+      builder.AddNode(p[0] + shift, p[1], p[2]);
+    }
+  }
+  for (const std::int64_t first : {6, 0}) {
+    AddElement(builder, ElementType::kTetrahedron, {first, first + 1, first + 2, first + 3});
+    AddElement(builder, ElementType::kTetrahedron, {first, first + 2, first + 1, first + 4});
+    AddElement(builder, ElementType::kTetrahedron, {first, first + 1, first + 2, first + 5});
+  }
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh),
+              AllOf(HasSubstr("face with nodes {0, 1, 2} belongs to 3 elements"),
+                    HasSubstr("(3 (tetrahedron), 4 (tetrahedron), 5 (tetrahedron))")));
+}
+
+// An n × n × n grid of unit cubes, each split into six tetrahedra around its main diagonal
+// (conforming: neighbouring cubes split their shared face the same way).
+MeshBuilder TetrahedralGrid(int n) {
+  MeshBuilder builder;
+  const auto id = [n](int i, int j, int k) -> std::int64_t {
+    return (static_cast<std::int64_t>(k) * (n + 1) + j) * (n + 1) + i;
+  };
+  for (int k = 0; k <= n; ++k) {
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) builder.AddNode(i, j, k);
+    }
+  }
+  // Paths from corner 0 to corner 7 of the cube, one axis at a time: each gives a tetrahedron.
+  constexpr std::array<std::array<int, 3>, 6> kAxisOrders = {
+      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        for (const auto& order : kAxisOrders) {
+          std::array<int, 3> at = {i, j, k};
+          std::vector<std::int64_t> nodes = {id(at[0], at[1], at[2])};
+          for (const int axis : order) {
+            ++at[axis];
+            nodes.push_back(id(at[0], at[1], at[2]));
+          }
+          builder.AddElement(ElementType::kTetrahedron, nodes);
+        }
+      }
+    }
+  }
+  return builder;
+}
+
+// On a mesh of tens of thousands of elements, where many elements share the sum of their node
+// ids (Build's repeat search groups elements by a hash of their nodes first), a repeat far from
+// its original is found, and of two repeats the one added first is named.
+TEST(MeshBuilderErrors, RepeatsInALargeMeshAreFoundAndTheFirstIsNamed) {
+  constexpr int kCubes = 16;  // 24,576 tetrahedra
+  EXPECT_TRUE(TetrahedralGrid(kCubes).Build().ok());
+  MeshBuilder builder = TetrahedralGrid(kCubes);
+  // Element 17 and element 20,000, each again with its nodes in another order.
+  const std::int64_t base = 6 * kCubes * kCubes * kCubes;
+  MeshBuilder probe = TetrahedralGrid(kCubes);
+  const absl::StatusOr<Mesh> grid = std::move(probe).Build();
+  ASSERT_TRUE(grid.ok());
+  for (const ElementId original : {20000, 17}) {
+    const std::span<const NodeId> nodes = grid->element_nodes(original);
+    builder.AddElement(ElementType::kTetrahedron,
+                       std::vector<std::int64_t>{nodes[3], nodes[1], nodes[0], nodes[2]});
+  }
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_EQ(mesh.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(Message(mesh),
+              HasSubstr(absl::StrCat("element ", base, " (tetrahedron) repeats element 20000")));
 }
 
 struct NonFiniteCase {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
+#include <vector>
 
 #include "absl/status/status.h"
 #include "absl/strings/str_cat.h"
@@ -53,14 +55,10 @@ void CollectFaces(const ElementBlock& block, std::vector<FaceKey>& faces) {
   }
 }
 
-// Sorts one node's faces. A bucket holds about 20 faces on a tetrahedral mesh and 12 on a
-// hexahedral one, where std::sort's set-up and its two-step comparisons cost more than the
-// sorting: an insertion sort on the keys as 128-bit integers took SortFaces and the sorts it
-// calls from 4.7 % to 3.8 % of a one-thread default run's samples on cub_wedge_like.vtk
-// (2026-11-29), the same order. A large bucket (a node of very many elements) still gets
-// std::sort.
+// Sorts one bucket's faces: an insertion sort on the keys as 128-bit integers, std::sort for the
+// rare large bucket.
 void SortBucket(FaceKey* first, FaceKey* last) {
-  constexpr std::ptrdiff_t kInsertionLimit = 64;
+  constexpr std::ptrdiff_t kInsertionLimit = 32;
   if (last - first > kInsertionLimit) {
     std::sort(first, last);
     return;
@@ -79,21 +77,36 @@ void SortBucket(FaceKey* first, FaceKey* last) {
   }
 }
 
-// The faces in ascending order, as std::sort would leave them, but bucketed first by their
-// smallest node id (the key's leading 32 bits) with a counting sort, so only the few faces of
-// one node (about 20 on a tetrahedral mesh) are sorted together: a single sort of all faces was
-// 4 % of a whole default run on cub_wedge_like.vtk (450k faces), more than reading the file.
-std::vector<FaceKey> SortFaces(const std::vector<FaceKey>& faces, std::int64_t node_count) {
-  std::vector<std::int64_t> start(static_cast<std::size_t>(node_count) + 1, 0);
-  for (const FaceKey& face : faces) ++start[(face.low >> 32) + 1];
+std::uint64_t FaceHash(const FaceKey& face) {
+  const std::uint64_t mixed = face.low * 0x9E3779B97F4A7C15ull ^ face.high * 0xC2B2AE3D27D4EB4Full;
+  return mixed ^ (mixed >> 29);
+}
+
+// The faces with equal ones next to each other: bucketed by a hash of the whole key with a
+// counting sort, about four faces a bucket, and each bucket sorted. Equal faces share a bucket,
+// so a run of equal faces never crosses one. Bucketing by the smallest node id (sorted order)
+// took 24 ms against 17 (medians of 15 runs, 2026-11-29, a slow hour of this VM) on
+// cub_wedge_like.vtk's 450k faces: the buckets of its low-numbered nodes held up to ~70 faces.
+// A second pass per part of the hash, to scatter in cache, was slower still (21 ms): with the
+// faces in one array of a few MB the scatter's misses are not what costs.
+std::vector<FaceKey> GroupEqualFaces(const std::vector<FaceKey>& faces) {
+  int bits = 0;
+  while (bits < 40 && (std::size_t{4} << bits) < faces.size()) ++bits;
+  const auto bucket_of = [bits](const FaceKey& face) -> std::size_t {
+    if (bits == 0) return 0;
+    return static_cast<std::size_t>(FaceHash(face) >> (64 - bits));
+  };
+  const std::size_t buckets = std::size_t{1} << bits;
+  std::vector<std::uint32_t> start(buckets + 1, 0);
+  for (const FaceKey& face : faces) ++start[bucket_of(face) + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<FaceKey> sorted(faces.size());
-  std::vector<std::int64_t> cursor(start.begin(), start.end() - 1);
-  for (const FaceKey& face : faces) sorted[cursor[face.low >> 32]++] = face;
-  for (std::int64_t node = 0; node < node_count; ++node) {
-    SortBucket(sorted.data() + start[node], sorted.data() + start[node + 1]);
+  std::vector<FaceKey> grouped(faces.size());
+  std::vector<std::uint32_t> cursor(start.begin(), start.end() - 1);
+  for (const FaceKey& face : faces) grouped[cursor[bucket_of(face)]++] = face;
+  for (std::size_t bucket = 0; bucket < buckets; ++bucket) {
+    SortBucket(grouped.data() + start[bucket], grouped.data() + start[bucket + 1]);
   }
-  return sorted;
+  return grouped;
 }
 
 }  // namespace
@@ -174,6 +187,61 @@ absl::Status CheckElementExtent(const Mesh& mesh, std::int64_t element, const st
         "change its length unit)"));
   }
   return absl::OkStatus();
+}
+
+// A face used by more than two elements: its nodes and how many use it.
+struct FaceFault {
+  std::vector<NodeId> nodes;
+  std::int64_t uses = 0;
+};
+
+// Boundary: faces used by exactly one element mark their nodes in `boundary` and are counted.
+// Returns the face of three or more elements (overlapping elements) with the lowest node ids, if
+// any: the same one whatever order the grouping leaves the faces in. Reads only the blocks.
+std::optional<FaceFault> MarkBoundary(const std::array<ElementBlock, kElementTypeCount>& blocks,
+                                      std::int64_t node_count, std::vector<std::uint8_t>& boundary,
+                                      std::int64_t& boundary_faces) {
+  std::vector<FaceKey> collected;
+  std::size_t corners = 0;
+  for (const ElementBlock& block : blocks) corners += block.nodes.size();
+  collected.reserve(corners);
+  for (ElementType type : kAllElementTypes) {
+    DispatchElementType(type, [&]<ElementType kType>() {
+      CollectFaces<kType>(blocks[TypeIndex(kType)], collected);
+    });
+  }
+  const std::vector<FaceKey> faces = GroupEqualFaces(collected);
+  boundary.assign(node_count, 0);
+  boundary_faces = 0;
+  std::optional<std::size_t> lowest_fault;  // index of its first use in `faces`
+  std::int64_t lowest_fault_uses = 0;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j - i > 2 && (!lowest_fault.has_value() || faces[i] < faces[*lowest_fault])) {
+      lowest_fault = i;
+      lowest_fault_uses = static_cast<std::int64_t>(j - i);
+    }
+    if (j - i == 1) {
+      ++boundary_faces;
+      for (std::uint64_t word : {faces[i].low, faces[i].high}) {
+        for (std::uint64_t id : {word >> 32, word & 0xffffffffu}) {
+          if (id != 0xffffffffu) boundary[id] = 1;
+        }
+      }
+    }
+    i = j;
+  }
+  if (!lowest_fault.has_value()) return std::nullopt;
+  FaceFault fault;
+  fault.uses = lowest_fault_uses;
+  const FaceKey& key = faces[*lowest_fault];
+  for (std::uint64_t word : {key.low, key.high}) {
+    for (std::uint64_t id : {word >> 32, word & 0xffffffffu}) {
+      if (id != 0xffffffffu) fault.nodes.push_back(static_cast<NodeId>(id));
+    }
+  }
+  return fault;
 }
 
 }  // namespace
@@ -291,41 +359,11 @@ absl::StatusOr<Mesh> MeshBuilder::Build() && {
       for (NodeId node : mesh.element_nodes(e)) emit(node, e);
     }
   });
-
   if (auto status = CheckNoRepeatedElements(mesh); !status.ok()) return status;
-
-  // Boundary: faces used by exactly one element (sorting groups equal faces together); a face of
-  // three or more elements is refused (overlapping elements).
-  std::vector<FaceKey> collected;
-  collected.reserve(mesh.corner_count());
-  for (ElementType type : kAllElementTypes) {
-    DispatchElementType(type, [&]<ElementType kType>() {
-      CollectFaces<kType>(mesh.blocks_[TypeIndex(kType)], collected);
-    });
-  }
-  const std::vector<FaceKey> faces = SortFaces(collected, node_count);
-  mesh.boundary_.assign(node_count, 0);
-  for (std::size_t i = 0; i < faces.size();) {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j] == faces[i]) ++j;
-    if (j - i > 2) {
-      std::vector<NodeId> face_nodes;
-      for (std::uint64_t word : {faces[i].low, faces[i].high}) {
-        for (std::uint64_t id : {word >> 32, word & 0xffffffffu}) {
-          if (id != 0xffffffffu) face_nodes.push_back(static_cast<NodeId>(id));
-        }
-      }
-      return NonManifoldFaceError(mesh, face_nodes, static_cast<std::int64_t>(j - i));
-    }
-    if (j - i == 1) {
-      ++mesh.boundary_face_count_;
-      for (std::uint64_t word : {faces[i].low, faces[i].high}) {
-        for (std::uint64_t id : {word >> 32, word & 0xffffffffu}) {
-          if (id != 0xffffffffu) mesh.boundary_[id] = 1;
-        }
-      }
-    }
-    i = j;
+  const std::optional<FaceFault> face_fault =
+      MarkBoundary(mesh.blocks_, node_count, mesh.boundary_, mesh.boundary_face_count_);
+  if (face_fault.has_value()) {
+    return NonManifoldFaceError(mesh, face_fault->nodes, face_fault->uses);
   }
   return std::move(mesh);
 }
