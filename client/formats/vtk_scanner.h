@@ -41,8 +41,9 @@ class VtkScanner {
   // most 18 digits, ending at whitespace or the end of the input. Anything else (another form,
   // a value out of range, the end of the input) gives nullopt with the token not consumed, so
   // NextToken then returns it and the caller reports it as before. Reading the digits while
-  // finding the token's end, without NextToken's view and from_chars, made integer sections
-  // (CELLS, CELL_TYPES, integer arrays) about twice as fast to read (docs/benchmarks.md).
+  // finding the token's end, without NextToken's view and from_chars, took a fifth off reading
+  // cub_wedge_like.vtk, whose CELLS are most of its tokens (docs/benchmarks.md, "Reading and
+  // building the mesh").
   std::optional<std::int64_t> NextPlainInteger(std::int64_t min, std::int64_t max) {
     SkipWhitespace();
     std::size_t at = pos_;
