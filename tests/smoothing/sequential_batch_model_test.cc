@@ -38,6 +38,7 @@ struct ModelCounts {
   std::int64_t reverted = 0;            // picks whose step was reverted (Δπ_i)
   std::int64_t repeated = 0;            // picks of an element picked in the batch before (Δπ_r)
   std::int64_t by_warpage = 0;          // picks whose criterion was q_γ's warpage term, not q
+  std::int64_t distinct = 0;            // elements picked at least once
 };
 
 // The sequential substep with its boundary fixed, batched, stopped by its pick cap or by the
@@ -232,6 +233,7 @@ class BatchedSequentialModel {
         break;
       }
     }
+    if (picked_in_batch_[pick] == -1) ++counts.distinct;
     if (picked_in_batch_[pick] == batch - 1) {
       penalty_[pick] += params_.penalty_repeat;  // Δπ_r
       ++counts.repeated;
@@ -329,6 +331,32 @@ TEST(BatchModelTest, EngineMakesTheModelsPicksOnEveryThreadCount) {
   EXPECT_GT(total.band_cut_batches, 0);
   EXPECT_GT(total.reverted, 0);
   EXPECT_GT(total.repeated, 0);
+}
+
+// One pick at a time (the paper's substep: a mesh too small for batches, as every shared mesh
+// is by default). The engine keeps what each picked element evaluates for its later picks
+// (FindAffectedOfOnePick), and most picks are of elements picked before; the model finds every
+// list afresh. Same picks, same coordinates to the bit.
+TEST(BatchModelTest, EngineMakesTheModelsPicksOneAtATime) {
+  SmoothingParams params;
+  params.method = Method::kSequential;
+  params.sequential_max_iterations = 6000;
+  params.sequential_stall_iterations = std::int64_t{1} << 40;
+  Mesh model_mesh = testing::LoadSharedMesh("cub_fru.vtk");
+  BatchedSequentialModel model(model_mesh, params);
+  ASSERT_EQ(model.Limit(), 1) << "cub_fru.vtk should be below the batches' size";
+  const ModelCounts counts = model.Run();
+  EXPECT_EQ(counts.batches, counts.picks);
+  EXPECT_GT(counts.picks, 4 * counts.distinct) << "few elements were picked again";
+  EXPECT_GT(counts.reverted + counts.blocker_candidates, 0);
+  const auto runs = testing::SmoothAtThreadCounts(
+      [] { return absl::StatusOr<Mesh>(testing::LoadSharedMesh("cub_fru.vtk")); }, params, {1, 2});
+  ASSERT_EQ(runs.size(), 2u);
+  for (const auto& run : runs) {
+    EXPECT_EQ(run.result.iterations_sequential, counts.picks) << run.result.threads << " threads";
+    EXPECT_TRUE(run.coordinates == testing::CoordinateSnapshot(model_mesh))
+        << run.result.threads << " threads: the engine's picks are not the model's";
+  }
 }
 
 // The warpage variant's criterion q_γ (Sec. 4.4), which the substep keeps per element beside the
