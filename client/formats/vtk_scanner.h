@@ -42,8 +42,8 @@ class VtkScanner {
   // a value out of range, the end of the input) gives nullopt with the token not consumed, so
   // NextToken then returns it and the caller reports it as before. Reading the digits while
   // finding the token's end, without NextToken's view and from_chars, took a fifth off reading
-  // cub_wedge_like.vtk, whose CELLS are most of its tokens (docs/benchmarks.md, "Reading and
-  // building the mesh").
+  // cub_wedge_like.vtk, whose CELLS are most of its tokens (docs/benchmarks.md, "Before the
+  // engine, and two set-up costs in it").
   std::optional<std::int64_t> NextPlainInteger(std::int64_t min, std::int64_t max) {
     SkipWhitespace();
     std::size_t at = pos_;

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <set>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "getme/meshgen/hybrid_block.h"
@@ -88,6 +90,51 @@ TEST(ElementTilesTest, AShuffledMeshGetsTheMortonOrder) {
   EXPECT_TRUE(tiles.morton_order());
   EXPECT_TRUE(tiles.serial().empty());
   EXPECT_LE(tiles.colour_count(), 24);
+}
+
+// The Morton order, computed here by brute force: each entry's key interleaves the bits of its
+// centroid's cell on a 65,536³ grid over the mesh's bounding cube (x in bit 0, y in bit 1, z in
+// bit 2 of every triple), and std::stable_sort by key keeps ties in block order.
+std::uint64_t MortonKeyOf(const Mesh& mesh, const NodeId* nodes, int count) {
+  const std::span<const double> axes[3] = {mesh.x(), mesh.y(), mesh.z()};
+  double low[3];
+  double extent = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const auto [min, max] = std::minmax_element(axes[a].begin(), axes[a].end());
+    low[a] = *min;
+    extent = std::max(extent, *max - *min);
+  }
+  std::uint64_t key = 0;
+  for (int a = 0; a < 3; ++a) {
+    double sum = 0.0;
+    for (int k = 0; k < count; ++k) sum += axes[a][nodes[k]];
+    const double cell = (sum / count - low[a]) * (65536.0 / extent);
+    const auto index = static_cast<std::uint64_t>(std::clamp(cell, 0.0, 65535.0));
+    for (int bit = 0; bit < 16; ++bit) key |= ((index >> bit) & 1) << (3 * bit + a);
+  }
+  return key;
+}
+
+TEST(ElementTilesTest, TheMortonOrderSortsCentroidsTiesInBlockOrder) {
+  const absl::StatusOr<Mesh> block = meshgen::HybridBlock(12, 12, 10, 0.3, 4);
+  ASSERT_TRUE(block.ok()) << block.status();
+  const Mesh mesh = mesh_test::Shuffled(*block, 9);
+  const ElementTiles tiles(mesh);
+  ASSERT_TRUE(tiles.morton_order());
+  for (ElementType type : kAllElementTypes) {
+    const ElementBlock& entries = mesh.block(type);
+    const int per_element = NodeCount(type);
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+    for (std::size_t i = 0; i < entries.elements.size(); ++i) {
+      keyed.emplace_back(MortonKeyOf(mesh, entries.nodes.data() + i * per_element, per_element), i);
+    }
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<ElementId> expected;
+    for (const auto& [key, entry] : keyed) expected.push_back(entries.elements[entry]);
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), tiles.elements(type)))
+        << TypeName(type);
+  }
 }
 
 TEST(ElementTilesTest, TheBuildIsDeterministic) {

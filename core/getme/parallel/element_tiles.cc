@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "getme/elements/element_tables.h"
 
@@ -49,6 +51,27 @@ BoundingCube CubeAround(const Mesh& mesh) {
   return cube;
 }
 
+// Sorts (key, entry) pairs given in ascending entry order by key, ties in entry order: what
+// std::sort of the pairs gives. A stable least-significant-digit radix sort, 12 bits a pass and
+// only as many passes as the largest key has bits (4 for the 48-bit Morton codes): std::sort was
+// about two thirds of building the tiles on cub_wedge_like.vtk (112k tetrahedra; 2026-11-29).
+void SortKeyedEntries(std::vector<std::pair<std::uint64_t, std::int32_t>>& keyed) {
+  constexpr int kDigitBits = 12;
+  constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
+  std::uint64_t largest = 0;
+  for (const auto& entry : keyed) largest = std::max(largest, entry.first);
+  std::vector<std::pair<std::uint64_t, std::int32_t>> scratch(keyed.size());
+  std::vector<std::size_t> start(kDigits + 1);
+  for (int shift = 0; shift < 64 && (largest >> shift) != 0; shift += kDigitBits) {
+    std::fill(start.begin(), start.end(), 0);
+    for (const auto& entry : keyed) ++start[((entry.first >> shift) & (kDigits - 1)) + 1];
+    for (std::size_t digit = 0; digit < kDigits; ++digit) start[digit + 1] += start[digit];
+    for (const auto& entry : keyed)
+      scratch[start[(entry.first >> shift) & (kDigits - 1)]++] = entry;
+    keyed.swap(scratch);
+  }
+}
+
 // The block's entries sorted by the Morton key of their centroids, ties by entry.
 template <ElementType kType>
 std::vector<std::int32_t> MortonOrder(const Mesh& mesh, const BoundingCube& cube) {
@@ -70,7 +93,7 @@ std::vector<std::int32_t> MortonOrder(const Mesh& mesh, const BoundingCube& cube
     }
     keyed[entry] = {key, entry};
   }
-  std::sort(keyed.begin(), keyed.end());
+  SortKeyedEntries(keyed);
   std::vector<std::int32_t> order(count);
   for (std::int32_t i = 0; i < count; ++i) order[i] = keyed[i].second;
   return order;
