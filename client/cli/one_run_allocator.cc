@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <thread>
 
 #if defined(__GLIBC__) && defined(__linux__)
 #include <malloc.h>
@@ -29,6 +30,11 @@ constexpr int kHeapGrowth = 64 << 20;
 constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 // glibc's chunk header: the size field before a block, and the previous chunk's size before it.
 constexpr std::uintptr_t kChunkHeader = 2 * sizeof(std::size_t);
+
+// The huge-page part of the heap that PrepareAllocatorForOneRun set up, [begin, end); empty when
+// it set none up.
+std::uintptr_t huge_begin = 0;
+std::uintptr_t huge_end = 0;
 
 std::uintptr_t Break() { return reinterpret_cast<std::uintptr_t>(sbrk(0)); }
 std::uintptr_t RoundUp(std::uintptr_t address) {
@@ -60,6 +66,8 @@ void PrepareAllocatorForOneRun() {
   // there be a huge page. Where the kernel offers none, the advice fails and changes nothing.
   madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
   if (madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) != 0) return;
+  huge_begin = begin;
+  huge_end = end;
   // Start the run's blocks at `begin`: the few hundred kilobytes below it stay allocated and
   // untouched for the process's life, so no block straddles small and huge pages.
   if (begin - top > 4 * kChunkHeader) {
@@ -67,9 +75,25 @@ void PrepareAllocatorForOneRun() {
   }
 }
 
+void PrefaultHeapInBackground(std::size_t bytes) {
+  if (huge_begin == 0) return;
+  const std::uintptr_t end =
+      std::min(huge_end, huge_begin + ((bytes + kHugePage - 1) & ~(kHugePage - 1)));
+  if (end <= huge_begin) return;
+  // Detached: the process may end before it does, which is harmless (it only maps pages). The
+  // advice maps what malloc has not handed out yet or is handing out right now; the kernel maps
+  // each page once, whichever thread comes first, and never touches its contents after.
+  std::thread([begin = huge_begin, end] {
+    for (std::uintptr_t at = begin; at < end; at += kHugePage) {
+      if (madvise(reinterpret_cast<void*>(at), kHugePage, MADV_POPULATE_WRITE) != 0) return;
+    }
+  }).detach();
+}
+
 #else
 
 void PrepareAllocatorForOneRun() {}
+void PrefaultHeapInBackground(std::size_t) {}
 
 #endif
 

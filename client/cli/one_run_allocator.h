@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+
 namespace getme::cli {
 
 // Sets the C library's allocator up for a process that runs one job and exits: memory it frees
@@ -11,5 +13,14 @@ namespace getme::cli {
 // any thread starts; it changes where memory comes from, never what a run computes. Not for the
 // server, which should give memory back between jobs.
 void PrepareAllocatorForOneRun();
+
+// Maps the first `bytes` of the heap that PrepareAllocatorForOneRun set up, on a thread of its
+// own, ahead of the run that will use them. A first touch of a page costs the thread that makes
+// it; the reading and building of a mesh run on one thread while the other core waits, and on
+// this project's VM first touches were a third of reading cub_wedge_like.vtk (docs/benchmarks.md,
+// "Before the engine, and two set-up costs in it"). Does nothing where that set-up did not
+// happen or the kernel cannot prefault (MADV_POPULATE_WRITE, Linux 5.14). Costs `bytes` of
+// resident memory whether the run uses them or not, so ask for what the run will use.
+void PrefaultHeapInBackground(std::size_t bytes);
 
 }  // namespace getme::cli

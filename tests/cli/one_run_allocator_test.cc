@@ -109,5 +109,77 @@ TEST(OneRunAllocatorTest, HeapBlocksLandOnHugePageAdvisedMemoryAndCallocStillZer
   EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
+// Resident memory of this process, in bytes (/proc/self/statm's second field, in pages).
+std::int64_t ResidentBytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::int64_t size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * static_cast<std::int64_t>(sysconf(_SC_PAGESIZE));
+}
+
+// A child's exit code when this kernel cannot prefault (MADV_POPULATE_WRITE, Linux 5.14).
+constexpr int kKernelCannotPrefault = 79;
+
+// In a fresh process: without the set-up the call maps nothing; after it, the heap's first 16 MiB
+// become resident on the helper thread, and blocks malloc then hands out are there, zero and
+// writable.
+int CheckPrefaultInAFreshProcess() {
+  {
+    constexpr std::size_t kSize = std::size_t{2} << 20;
+    void* probe = mmap(nullptr, kSize, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (probe == MAP_FAILED) return 20;
+    const bool can = madvise(probe, kSize, MADV_POPULATE_WRITE) == 0;
+    munmap(probe, kSize);
+    if (!can) return kKernelCannotPrefault;
+  }
+  constexpr std::int64_t kAsked = std::int64_t{16} << 20;
+  const std::int64_t at_start = ResidentBytes();
+  PrefaultHeapInBackground(kAsked);  // before the set-up: nothing to map
+  usleep(200 * 1000);
+  if (ResidentBytes() - at_start > kAsked / 2) return 21;
+  PrepareAllocatorForOneRun();
+  const std::int64_t before = ResidentBytes();
+  PrefaultHeapInBackground(kAsked);
+  bool mapped = false;
+  for (int wait = 0; wait < 200 && !mapped; ++wait) {
+    mapped = ResidentBytes() - before >= kAsked - (std::int64_t{2} << 20);
+    if (!mapped) usleep(10 * 1000);
+  }
+  if (!mapped) return 22;
+  // The mapped pages are the ones malloc hands out next (a block below the set-up's 8 MiB mmap
+  // threshold comes from the heap): writing 6 MiB there adds little.
+  constexpr std::size_t kBlock = std::size_t{6} << 20;
+  auto* block = static_cast<unsigned char*>(std::calloc(kBlock, 1));
+  if (block == nullptr) return 23;
+  for (std::size_t i = 0; i < kBlock; i += 4096) {
+    if (block[i] != 0) return 24;
+  }
+  const std::int64_t mapped_total = ResidentBytes();
+  std::memset(block, 0x5a, kBlock);
+  if (ResidentBytes() - mapped_total > (std::int64_t{2} << 20)) return 25;
+  std::free(block);
+  return 0;
+}
+
+TEST(OneRunAllocatorTest, PrefaultMapsTheHeapAheadOfTheRunOnlyAfterTheSetUp) {
+  if (kSanitizerAllocator) GTEST_SKIP() << "the sanitizers replace malloc";
+  if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage")) {
+    GTEST_SKIP()
+        << "this kernel has no transparent huge pages, so the set-up leaves the heap alone";
+  }
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) _exit(CheckPrefaultInAFreshProcess());
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child died: status " << status;
+  if (WEXITSTATUS(status) == kKernelCannotPrefault) {
+    GTEST_SKIP() << "this kernel cannot prefault (MADV_POPULATE_WRITE)";
+  }
+  // 21: mapped without the set-up; 22: not mapped after it; 23: calloc failed; 24: non-zero
+  // memory; 25: the block was not on the mapped pages.
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
 }  // namespace
 }  // namespace getme::cli
