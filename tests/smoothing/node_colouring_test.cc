@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
+#include <set>
 #include <vector>
 
 #include "getme/meshgen/distorted_hex_block.h"
@@ -73,6 +75,70 @@ TEST(NodeColouringTest, HexGridNeedsFewColours) {
       ColourNodes(*mesh, std::vector<std::uint8_t>(mesh->node_count(), 1));
   EXPECT_GE(colouring.colour_count(), 8);
   EXPECT_LE(colouring.colour_count(), 27);
+}
+
+// First fit in node order, by brute force: each selected node, in ascending id, takes the
+// smallest colour no node sharing an element with it has taken. The polish's node steps, and so
+// its results, follow this colouring, so ColourNodes must give exactly it.
+std::vector<int> FirstFitColours(const Mesh& mesh, const std::vector<std::uint8_t>& selected) {
+  std::vector<int> colour(mesh.node_count(), -1);
+  for (NodeId node = 0; node < mesh.node_count(); ++node) {
+    if (!selected[node]) continue;
+    std::set<int> taken;
+    for (ElementId e : mesh.node_elements(node)) {
+      for (NodeId other : mesh.element_nodes(e)) {
+        if (colour[other] >= 0) taken.insert(colour[other]);
+      }
+    }
+    int c = 0;
+    while (taken.count(c) != 0) ++c;
+    colour[node] = c;
+  }
+  return colour;
+}
+
+void ExpectFirstFit(const Mesh& mesh, const std::vector<std::uint8_t>& selected) {
+  const NodeColouring colouring = ColourNodes(mesh, selected);
+  std::vector<int> colour(mesh.node_count(), -1);
+  for (int c = 0; c < colouring.colour_count(); ++c) {
+    for (NodeId node : colouring.Colour(c)) colour[node] = c;
+  }
+  EXPECT_EQ(colour, FirstFitColours(mesh, selected));
+}
+
+TEST(NodeColouringTest, TheColouringIsFirstFitInNodeOrder) {
+  auto mesh = meshgen::HybridBlock(6, 5, 4, 0.3, 2);
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  std::vector<std::uint8_t> selected(mesh->node_count(), 0);
+  for (NodeId node = 0; node < mesh->node_count(); ++node) {
+    selected[node] = !mesh->is_boundary(node) || node % 2 == 0 ? 1 : 0;
+  }
+  ExpectFirstFit(*mesh, selected);
+}
+
+// Nodes 0..69 pairwise in a tetrahedron (each pair with two nodes of its own): first fit gives
+// them 70 colours, more than a 64-bit word of taken colours could hold.
+TEST(NodeColouringTest, FirstFitHoldsPastSixtyFourColours) {
+  constexpr int kClique = 70;
+  MeshBuilder builder;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+  const auto add_node = [&] {
+    return builder.AddNode(coordinate(random), coordinate(random), coordinate(random));
+  };
+  for (int i = 0; i < kClique; ++i) add_node();
+  for (std::int64_t i = 0; i < kClique; ++i) {
+    for (std::int64_t j = i + 1; j < kClique; ++j) {
+      const std::int64_t p = add_node();
+      const std::int64_t q = add_node();
+      builder.AddElement(ElementType::kTetrahedron, std::vector<std::int64_t>{i, j, p, q});
+    }
+  }
+  const absl::StatusOr<Mesh> mesh = std::move(builder).Build();
+  ASSERT_TRUE(mesh.ok()) << mesh.status();
+  const std::vector<std::uint8_t> selected(mesh->node_count(), 1);
+  EXPECT_EQ(ColourNodes(*mesh, selected).colour_count(), kClique);
+  ExpectFirstFit(*mesh, selected);
 }
 
 TEST(ElementsByLastColourTest, EachElementUnderTheLastColourOfItsNodes) {
