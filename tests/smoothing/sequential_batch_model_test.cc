@@ -91,7 +91,7 @@ class BatchedSequentialModel {
       std::vector<ElementId> candidates = blockers;
       counts.blocker_candidates += static_cast<std::int64_t>(blockers.size());
       blockers.clear();
-      const std::vector<ElementId> ranked = InKeyOrder();
+      const std::vector<ElementId> ranked = InKeyOrder(static_cast<std::size_t>(4 * limit));
       const double band_end = Key(ranked.front()) + params_.sequential_batch_band;
       for (std::size_t i = 0; i < ranked.size(); ++i) {
         if (static_cast<std::int64_t>(i) == 4 * limit) break;
@@ -144,15 +144,19 @@ class BatchedSequentialModel {
 
   double Minimum() const { return *std::min_element(criterion_.begin(), criterion_.end()); }
 
-  std::vector<ElementId> InKeyOrder() const {
+  // The first `count` selectable elements in (key, canonical rank) order (all if fewer).
+  std::vector<ElementId> InKeyOrder(std::size_t count) const {
     std::vector<ElementId> order;
     for (ElementId element = 0; element < mesh_.element_count(); ++element) {
       if (selectable_[element]) order.push_back(element);
     }
-    std::sort(order.begin(), order.end(), [&](ElementId a, ElementId b) {
-      if (Key(a) != Key(b)) return Key(a) < Key(b);
-      return mesh_.canonical_rank(a) < mesh_.canonical_rank(b);
-    });
+    count = std::min(count, order.size());
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count),
+                      order.end(), [&](ElementId a, ElementId b) {
+                        if (Key(a) != Key(b)) return Key(a) < Key(b);
+                        return mesh_.canonical_rank(a) < mesh_.canonical_rank(b);
+                      });
+    order.resize(count);
     return order;
   }
 
