@@ -88,25 +88,30 @@ int CheckInAFreshProcess() {
   return 0;
 }
 
+// Runs `check` in a forked child, whose allocator no test has set up yet, and returns its exit
+// code; −1 if the child could not start or did not exit.
+int ExitCodeInAFreshProcess(int (*check)()) {
+  const pid_t child = fork();
+  if (child < 0) return -1;
+  if (child == 0) _exit(check());
+  int status = 0;
+  if (waitpid(child, &status, 0) != child || !WIFEXITED(status)) return -1;
+  return WEXITSTATUS(status);
+}
+
 TEST(OneRunAllocatorTest, HeapBlocksLandOnHugePageAdvisedMemoryAndCallocStillZeroes) {
   if (kSanitizerAllocator) GTEST_SKIP() << "the sanitizers replace malloc";
   if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage")) {
     GTEST_SKIP() << "this kernel has no transparent huge pages";
   }
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) _exit(CheckInAFreshProcess());
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status)) << "the child died: status " << status;
-  if (WEXITSTATUS(status) == kKernelShowsNoAdvice) {
+  const int code = ExitCodeInAFreshProcess(CheckInAFreshProcess);
+  ASSERT_GE(code, 0) << "the child could not start or died";
+  if (code == kKernelShowsNoAdvice) {
     GTEST_SKIP() << "this kernel does not show MADV_HUGEPAGE in /proc/self/smaps";
   }
-  if (WEXITSTATUS(status) == kAdvisedBefore) {
-    GTEST_SKIP() << "glibc advises huge pages already (GLIBC_TUNABLES)";
-  }
+  if (code == kAdvisedBefore) GTEST_SKIP() << "glibc advises huge pages already (GLIBC_TUNABLES)";
   // 10/11/13: malloc or calloc failed; 12: no advice after; 14: calloc returned non-zeros.
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(code, 0);
 }
 
 // Resident memory of this process, in bytes (/proc/self/statm's second field, in pages).
@@ -167,18 +172,14 @@ TEST(OneRunAllocatorTest, PrefaultMapsTheHeapAheadOfTheRunOnlyAfterTheSetUp) {
     GTEST_SKIP()
         << "this kernel has no transparent huge pages, so the set-up leaves the heap alone";
   }
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) _exit(CheckPrefaultInAFreshProcess());
-  int status = 0;
-  ASSERT_EQ(waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status)) << "the child died: status " << status;
-  if (WEXITSTATUS(status) == kKernelCannotPrefault) {
+  const int code = ExitCodeInAFreshProcess(CheckPrefaultInAFreshProcess);
+  ASSERT_GE(code, 0) << "the child could not start or died";
+  if (code == kKernelCannotPrefault) {
     GTEST_SKIP() << "this kernel cannot prefault (MADV_POPULATE_WRITE)";
   }
   // 21: mapped without the set-up; 22: not mapped after it; 23: calloc failed; 24: non-zero
   // memory; 25: the block was not on the mapped pages.
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(code, 0);
 }
 
 }  // namespace
