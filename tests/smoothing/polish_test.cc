@@ -138,6 +138,46 @@ TEST(PolishTest, WorstElementStageIsSkippedWhereTheMinimumIsPinned) {
   EXPECT_EQ(result->after.q_min, pinned_quality);
 }
 
+// The mean stage stops at polish_final_tolerance where its end is the result, and runs on to
+// polish_tolerance where the worst-cluster stage starts from it (polish.cc, RunPolish).
+TEST(PolishTest, MeanStageStopsAtTheFinalToleranceWhereNoClusterStageFollows) {
+  struct Run {
+    SmoothingResult result;
+    testing::CoordinateSnapshot coordinates;
+  };
+  auto run = [](double cluster_trigger, double tolerance, double final_tolerance) {
+    auto mesh = meshgen::HybridBlock(8, 8, 6, 0.3, 13);
+    EXPECT_TRUE(mesh.ok());
+    SmoothingParams params;
+    params.threads = 2;
+    params.polish_cluster_trigger = cluster_trigger;
+    params.polish_tolerance = tolerance;
+    params.polish_final_tolerance = final_tolerance;
+    auto result = Smooth(*mesh, params);
+    EXPECT_TRUE(result.ok()) << result.status();
+    return Run{*result, testing::CoordinateSnapshot(*mesh)};
+  };
+  const SmoothingParams defaults;
+  // No cluster stage: polish_tolerance plays no part, polish_final_tolerance stops the stage.
+  const Run loose = run(0.0, defaults.polish_tolerance, defaults.polish_final_tolerance);
+  const Run tight_unused = run(0.0, 1e-12, defaults.polish_final_tolerance);
+  const Run tight = run(0.0, defaults.polish_tolerance, 1e-12);
+  EXPECT_TRUE(loose.coordinates == tight_unused.coordinates);
+  EXPECT_EQ(loose.result.iterations_polish, tight_unused.result.iterations_polish);
+  EXPECT_LT(loose.result.iterations_polish, tight.result.iterations_polish);
+  EXPECT_GE(tight.result.after.q_mean, loose.result.after.q_mean);
+  // What the looser rule gives up is what it predicted: less than its tolerance.
+  EXPECT_LT(tight.result.after.q_mean - loose.result.after.q_mean, defaults.polish_final_tolerance);
+
+  // A cluster stage that may follow (trigger 1: any worst element with a free node): the mean
+  // stage before it runs to polish_tolerance, so that tolerance now changes the result (were the
+  // stage stopped by polish_final_tolerance, the same in both runs, they would be the same bits).
+  ASSERT_LT(loose.result.after.q_min, loose.result.after.q_mean);
+  const Run before_cluster = run(1.0, defaults.polish_tolerance, 1e-12);
+  const Run before_cluster_tight = run(1.0, 1e-12, 1e-12);
+  EXPECT_FALSE(before_cluster.coordinates == before_cluster_tight.coordinates);
+}
+
 TEST(PolishTest, OnlyGetmePolishes) {
   for (Method method :
        {Method::kSimultaneous, Method::kSequential, Method::kWarpage, Method::kSmartLaplace}) {
@@ -210,6 +250,7 @@ TEST(PolishTest, ParametersAreValidated) {
       {"sequential_handoff_window", [](SmoothingParams& p) { p.sequential_handoff_window = -1; }},
       {"simultaneous_handoff_gain", [](SmoothingParams& p) { p.simultaneous_handoff_gain = -1.0; }},
       {"polish_tolerance", [](SmoothingParams& p) { p.polish_tolerance = -1.0; }},
+      {"polish_final_tolerance", [](SmoothingParams& p) { p.polish_final_tolerance = -1.0; }},
       {"polish_max_sweeps", [](SmoothingParams& p) { p.polish_max_sweeps = -1; }},
       {"polish_backtracking_steps", [](SmoothingParams& p) { p.polish_backtracking_steps = 31; }},
       {"polish_cluster_trigger", [](SmoothingParams& p) { p.polish_cluster_trigger = -0.1; }},

@@ -116,6 +116,7 @@ TEST(ToEngineParams, SequentialBatchFieldsRoundTrip) {
 TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   SmoothingParams params;
   params.polish_tolerance = 3e-5;
+  params.polish_final_tolerance = 7e-4;
   params.polish_max_sweeps = 17;
   params.polish_node_tolerance = 2e-7;
   params.polish_backtracking_steps = 6;
@@ -140,6 +141,7 @@ TEST(ToEngineParams, PolishAndUntangleFieldsRoundTrip) {
   ASSERT_TRUE(back.ok()) << back.status();
   EXPECT_TRUE(back->polish);
   EXPECT_EQ(back->polish_tolerance, 3e-5);
+  EXPECT_EQ(back->polish_final_tolerance, 7e-4);
   EXPECT_EQ(back->polish_max_sweeps, 17);
   EXPECT_EQ(back->polish_node_tolerance, 2e-7);
   EXPECT_EQ(back->polish_backtracking_steps, 6);

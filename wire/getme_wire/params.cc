@@ -192,6 +192,9 @@ absl::StatusOr<SmoothingParams> ToEngineParams(const v1::SmoothingParameters& wi
   }
   if (wire.has_polish()) params.polish = wire.polish();
   if (wire.has_polish_tolerance()) params.polish_tolerance = wire.polish_tolerance();
+  if (wire.has_polish_final_tolerance()) {
+    params.polish_final_tolerance = wire.polish_final_tolerance();
+  }
   if (wire.has_polish_max_sweeps()) params.polish_max_sweeps = wire.polish_max_sweeps();
   if (wire.has_polish_node_tolerance()) {
     params.polish_node_tolerance = wire.polish_node_tolerance();
@@ -281,6 +284,7 @@ v1::SmoothingParameters ToWireParameters(const SmoothingParams& params) {
   SetIfChanged(params.polish_cluster_iterations, defaults.polish_cluster_iterations, [&](std::int64_t v) { wire.set_polish_cluster_iterations(v); });
   SetIfChanged(params.polish_cluster_ascent_iterations, defaults.polish_cluster_ascent_iterations, [&](std::int64_t v) { wire.set_polish_cluster_ascent_iterations(v); });
   SetIfChanged(params.polish_tolerance, defaults.polish_tolerance, [&](double v) { wire.set_polish_tolerance(v); });
+  SetIfChanged(params.polish_final_tolerance, defaults.polish_final_tolerance, [&](double v) { wire.set_polish_final_tolerance(v); });
   SetIfChanged(params.polish_max_sweeps, defaults.polish_max_sweeps, [&](std::int64_t v) { wire.set_polish_max_sweeps(v); });
   SetIfChanged(params.polish_node_tolerance, defaults.polish_node_tolerance, [&](double v) { wire.set_polish_node_tolerance(v); });
   SetIfChanged(params.polish_backtracking_steps, defaults.polish_backtracking_steps, [&](int v) { wire.set_polish_backtracking_steps(v); });

@@ -100,6 +100,7 @@ absl::Status SmoothingParams::Validate() const {
         {"sequential_improvement_tolerance", sequential_improvement_tolerance},
         {"sequential_batch_band", sequential_batch_band},
         {"polish_tolerance", polish_tolerance},
+        {"polish_final_tolerance", polish_final_tolerance},
         {"polish_node_tolerance", polish_node_tolerance},
         {"simultaneous_handoff_gain", simultaneous_handoff_gain},
         {"polish_worst_tolerance", polish_worst_tolerance},
