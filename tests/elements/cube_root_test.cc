@@ -115,5 +115,67 @@ TEST(CubeRootTest, EachLaneHasTheBitsOfTheScalarRoot) {
   }
 }
 
+// CubeRootAsRatio: the mean ratio's numerator / denominator form of the same Halley step.
+// Relative error of the exact quotient numerator / denominator against ∛x, through its cube
+// (3 × the root's relative error, to first order), all in 113-bit arithmetic.
+double CubedRatioError(double x, const CubeRootRatio<double>& ratio) {
+  const __float128 quotient = static_cast<__float128>(ratio.numerator) / ratio.denominator;
+  const __float128 error = (quotient * quotient * quotient - x) / x;
+  return static_cast<double>(error < 0 ? -error : error);
+}
+
+bool InRatioRange(double x) { return x >= std::ldexp(1.0, -300) && x < std::ldexp(1.0, 301); }
+
+TEST(CubeRootAsRatioTest, TheFractionIsWithinAFewUlpsOfTheExactRoot) {
+  // Rounding the numerator's two operations and the denominator's two, each within half an ulp
+  // (2^-53): at most 4 · 2^-53 on the root to first order, 12 · 2^-53 on its cube.
+  const double bound = 12.0 * std::ldexp(1.0, -53);
+  int tested = 0;
+  for (double x : Arguments()) {
+    if (!InRatioRange(x)) continue;
+    ++tested;
+    const CubeRootRatio<double> ratio = CubeRootAsRatio(x);
+    ASSERT_LE(CubedRatioError(x, ratio), bound) << std::hexfloat << x;
+  }
+  EXPECT_GT(tested, 400000);
+}
+
+TEST(CubeRootAsRatioTest, OutsideItsRangeTheFractionIsCubeRootOverOne) {
+  const std::vector<double> outside = {0.0,
+                                       -8.0,
+                                       std::ldexp(1.0, -301),
+                                       std::nextafter(std::ldexp(1.0, -300), 0.0),
+                                       std::ldexp(1.0, 301),
+                                       1e200,
+                                       std::numeric_limits<double>::infinity()};
+  for (double x : outside) {
+    const CubeRootRatio<double> ratio = CubeRootAsRatio(x);
+    EXPECT_EQ(RootBits(ratio.numerator), RootBits(CubeRoot(x))) << x;
+    EXPECT_EQ(ratio.denominator, 1.0) << x;
+  }
+  // And inside it, both ends take the fraction.
+  EXPECT_NE(CubeRootAsRatio(std::ldexp(1.0, -300)).denominator, 1.0);
+  EXPECT_NE(CubeRootAsRatio(std::nextafter(std::ldexp(1.0, 301), 0.0)).denominator, 1.0);
+}
+
+TEST(CubeRootAsRatioTest, EachLaneHasTheBitsOfTheScalarFraction) {
+  std::vector<double> arguments = Arguments();
+  arguments.resize(20000);
+  for (double special : {0.0, -27.0, 1e-100, 1e100, std::numeric_limits<double>::infinity()}) {
+    arguments.push_back(special);
+    arguments.push_back(0.3);
+  }
+  for (std::size_t i = 0; i + kLanes <= arguments.size(); i += kLanes) {
+    Lanes x;
+    for (int l = 0; l < kLanes; ++l) x[l] = arguments[i + l];
+    const CubeRootRatio<Lanes> ratio = CubeRootAsRatio(x);
+    for (int l = 0; l < kLanes; ++l) {
+      const CubeRootRatio<double> scalar = CubeRootAsRatio(x[l]);
+      EXPECT_EQ(RootBits(ratio.numerator[l]), RootBits(scalar.numerator)) << std::hexfloat << x[l];
+      EXPECT_EQ(RootBits(ratio.denominator[l]), RootBits(scalar.denominator)) << x[l];
+    }
+  }
+}
+
 }  // namespace
 }  // namespace getme::test

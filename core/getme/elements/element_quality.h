@@ -82,7 +82,9 @@ GETME_LANE_INLINE S MeanRatioOrInvalid(const LaneNodes<kType, S>& p) {
   for (const auto& t : Table::kNodeTets) {
     const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
     valid = Both(valid, f.det_d > 0.0);
-    sum += 3.0 * CubeRoot(f.det_s * f.det_s) / f.frobenius2;
+    // q_k = 3 ∛(det S²) / |S|_F², with one division (CubeRootAsRatio).
+    const CubeRootRatio<S> root = CubeRootAsRatio(f.det_s * f.det_s);
+    sum += 3.0 * root.numerator / (root.denominator * f.frobenius2);
   }
   const S q = sum / static_cast<double>(Table::kNodeTets.size());
   // std::clamp(q, 0, 1), lane by lane.

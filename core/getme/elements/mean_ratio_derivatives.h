@@ -122,7 +122,8 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
       return kInfinity;
     }
     const auto& [d0, d1, d2, d1xd2, s0, s1, s2, det_s, frobenius2] = frame;
-    const double a = 1.0 / (3.0 * CubeRoot(det_s * det_s));
+    const CubeRootRatio<double> root = CubeRootAsRatio(det_s * det_s);
+    const double a = root.denominator / (3.0 * root.numerator);
     sum += frobenius2 * a;
     if constexpr (kOrder >= 1) {
       int m = -1;
@@ -144,7 +145,7 @@ inline double InverseMeanRatioTerms(const ElementNodes<kType>& p, int node, Vec3
       }
       const Vec3 grad_n = 2.0 * (s0 * b[0] + s1 * b[1] + s2 * b[2]);
       const Vec3 v = kDetWInverse * ddet;
-      const double n_over_det = frobenius2 / det_s;
+      const double n_over_det = frobenius2 * (1.0 / det_s);  // as NodeTetDerivatives forms it
       g += a * (grad_n - (2.0 / 3.0) * n_over_det * v);
     }
   }
@@ -191,9 +192,11 @@ GETME_LANE_INLINE InverseMeanRatioCostAndQualityOf<S> CostAndQuality(const LaneN
   for (const auto& t : Table::kNodeTets) {
     const NodeTetFrameOf<S> f = NodeTetFrameAt<kType, S>(p, t);
     valid = Both(valid, f.det_d > 0.0);
-    const S root = CubeRoot(f.det_s * f.det_s);
-    cost += f.frobenius2 * (1.0 / (3.0 * root));
-    quality += 3.0 * root / f.frobenius2;
+    // 1/q_k as AddNodeTetCost forms it and q_k as MeanRatioOrInvalid does: the polish compares a
+    // trial's cost with the Hessian pass's, and stores the trial's qualities.
+    const CubeRootRatio<S> root = CubeRootAsRatio(f.det_s * f.det_s);
+    cost += f.frobenius2 * (root.denominator / (3.0 * root.numerator));
+    quality += 3.0 * root.numerator / (root.denominator * f.frobenius2);
   }
   quality /= kTets;
   const S clamped =
@@ -284,7 +287,8 @@ GETME_LANE_INLINE HessianSums<S> EmptyHessianSums() {
 template <typename S>
 GETME_LANE_INLINE S AddNodeTetCost(const NodeTetFrameOf<S>& f, HessianSums<S>& sums) {
   sums.valid = Both(sums.valid, f.det_d > 0.0);
-  const S a = 1.0 / (3.0 * CubeRoot(f.det_s * f.det_s));
+  const CubeRootRatio<S> root = CubeRootAsRatio(f.det_s * f.det_s);
+  const S a = root.denominator / (3.0 * root.numerator);
   sums.sum += f.frobenius2 * a;
   return a;
 }
@@ -305,13 +309,15 @@ GETME_LANE_INLINE NodeTetDerivativesOf<S> NodeTetDerivatives(const NodeTetFrameO
   constexpr double kDetWInverse = w[0][0] * w[1][1] * w[2][2];
   const Point3<S> grad_n = 2.0 * (f.s0 * b.x + f.s1 * b.y + f.s2 * b.z);
   const Point3<S> v = kDetWInverse * ddet;
-  const S n_over_det = f.frobenius2 / f.det_s;
+  // One division by δ for the three factors below: divisions are what these kernels wait for.
+  const S inverse_det = 1.0 / f.det_s;
+  const S n_over_det = f.frobenius2 * inverse_det;
   NodeTetDerivativesOf<S> d;
   d.gradient = a * (grad_n - ((2.0 / 3.0) * n_over_det) * v);
   // ∇²(1/q) = a (2|b|² I − (2/(3δ)) (∇N vᵗ + v ∇Nᵗ) + (10/9)(N/δ²) v vᵗ).
   const S diagonal = 2.0 * SquaredNorm(b);
-  const S cross_factor = 2.0 / (3.0 * f.det_s);
-  const S outer_factor = (10.0 / 9.0) * (n_over_det / f.det_s);
+  const S cross_factor = (2.0 / 3.0) * inverse_det;
+  const S outer_factor = (10.0 / 9.0) * (n_over_det * inverse_det);
   const std::array<S, 3> gn = {grad_n.x, grad_n.y, grad_n.z};
   const std::array<S, 3> vv = {v.x, v.y, v.z};
   int entry = 0;
