@@ -487,13 +487,21 @@ bool WorstClusterMayFollow(const SmoothingContext& context,
 
 }  // namespace
 
-absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
+PolishColouring MakePolishColouring(const Mesh& mesh, std::span<const std::uint8_t> movable) {
+  PolishColouring made{ColourNodes(mesh, movable), {}};
+  made.final_after_colour = ElementsByLastColour(mesh, made.colouring);
+  return made;
+}
+
+absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context,
+                                       std::optional<PolishColouring> colouring_made) {
   const double phase_start = context.ElapsedSeconds();
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
   // Once per call, in a fixed order: the sets, and so the order of the node steps, depend on the
   // mesh and the free nodes only.
-  const NodeColouring colouring = ColourNodes(mesh, context.movable);
+  if (!colouring_made.has_value()) colouring_made = MakePolishColouring(mesh, context.movable);
+  const NodeColouring& colouring = colouring_made->colouring;
   PolishState state(mesh.node_count());
   state.trial_quality.assign(mesh.element_count(), 0.0);
 
@@ -507,9 +515,9 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context) {
       current.q_min < PinnedMinimum(context)) {
     state.exponent = params.polish_worst_exponent;
     state.q_floor = 0.0;
-    const CompressedRows final_after_colour = ElementsByLastColour(mesh, colouring);
-    finished = RunStage(context, colouring, &final_after_colour, state, StageGoal::kQMin,
-                        params.polish_worst_max_sweeps, params.polish_tolerance, current, summary);
+    finished =
+        RunStage(context, colouring, &colouring_made->final_after_colour, state, StageGoal::kQMin,
+                 params.polish_worst_max_sweeps, params.polish_tolerance, current, summary);
   }
   // The mean stage's end is the polish's result unless the worst-cluster stage (below) starts
   // from it. Where it is the result, it stops at polish_final_tolerance: its stop rule then trades

@@ -1,11 +1,25 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <span>
 
 #include "absl/status/statusor.h"
+#include "getme/mesh/node_colouring.h"
 #include "getme/smoothing/smoothing_context.h"
 
 namespace getme {
+
+// The node colouring the polish sweeps by, and the elements each colour finishes
+// (node_colouring.h). A function of the mesh's connectivity and the free nodes alone, neither of
+// which a phase changes, so Smooth() makes it on a second thread while the sequential substep
+// runs, which on meshes below the batches' size leaves the other core idle: it was 2–5 % of a
+// whole default run's time on the shared meshes, serial, at the polish's start.
+struct PolishColouring {
+  NodeColouring colouring;
+  CompressedRows final_after_colour;  // ElementsByLastColour(mesh, colouring)
+};
+PolishColouring MakePolishColouring(const Mesh& mesh, std::span<const std::uint8_t> movable);
 
 // The polish stage of issue 14 (item 1), beyond the paper: GETMe's fixed point is not the
 // optimum of q_mean (the paper's own tables show GETMe ~0.01 below Mesquite's q_mean), so after
@@ -33,6 +47,10 @@ namespace getme {
 // (docs/quality.md#polish). One progress event per sweep of either stage (Phase::kPolish,
 // numbered on; reverted_nodes = nodes whose step was refused). Keeps context.quality up to date.
 // Cancelled between colours, with the mesh left in the best state so far (valid).
-absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context);
+//
+// `colouring`, if given, must be MakePolishColouring of the mesh and context.movable as they are
+// now; without it RunPolish makes it.
+absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context,
+                                       std::optional<PolishColouring> colouring = std::nullopt);
 
 }  // namespace getme

@@ -1,6 +1,7 @@
 #include "getme/smoothing/smoother.h"
 
 #include <algorithm>
+#include <future>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -89,6 +90,14 @@ absl::Status RunMethod(SmoothingContext& context, Method method, Record& record)
           !s.ok()) {
         return s;
       }
+      // The polish's colouring, made beside the sequential substep (polish.h says why). Its
+      // destructor waits for it if the substep fails.
+      std::future<PolishColouring> colouring;
+      if (polish && context.pool.thread_count() > 1) {
+        colouring = std::async(std::launch::async, [&context] {
+          return MakePolishColouring(context.mesh, context.movable);
+        });
+      }
       if (auto s = record(RunSequential(
               context, SelectionCriterion::kMeanRatio,
               polish ? SequentialStop::kHandOnToPolish : SequentialStop::kStalledWindow));
@@ -101,7 +110,12 @@ absl::Status RunMethod(SmoothingContext& context, Method method, Record& record)
       // Issue 14, item 1: raise q_mean to the global optimiser's level after GETMe, without
       // lowering q_min (polish.h).
       if (!polish) return absl::OkStatus();
-      if (auto s = record(RunPolish(context)); !s.ok()) return s;
+      if (auto s = record(RunPolish(context, colouring.valid()
+                                                 ? std::optional<PolishColouring>(colouring.get())
+                                                 : std::nullopt));
+          !s.ok()) {
+        return s;
+      }
       if (!held.has_value()) return absl::OkStatus();
       held.reset();
       return RunSlidingStages(context, record);
