@@ -13,8 +13,8 @@ namespace getme {
 // The node colouring the polish sweeps by, and the elements each colour finishes
 // (node_colouring.h). A function of the mesh's connectivity and the free nodes alone, neither of
 // which a phase changes, so Smooth() makes it on a second thread while the sequential substep
-// runs, which on meshes below the batches' size leaves the other core idle: it was 2–5 % of a
-// whole default run's time on the shared meshes, serial, at the polish's start.
+// runs one pick at a time (meshes below the batches' size), which leaves the other core idle: it
+// was 2–5 % of a whole default run's time on the shared meshes, serial, at the polish's start.
 struct PolishColouring {
   NodeColouring colouring;
   CompressedRows final_after_colour;  // ElementsByLastColour(mesh, colouring)

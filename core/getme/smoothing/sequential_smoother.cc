@@ -100,12 +100,8 @@ class SequentialSubstep {
     return criterion_value_.empty() ? std::max(0.0, context_.quality[element])
                                     : criterion_value_[element];
   }
-  // Picks per batch: at most sequential_batch, and one per sequential_batch_elements elements;
-  // where that is fewer than kMinimumBatch, one pick at a time.
   static std::int64_t BatchLimit(const SmoothingParams& params, const Mesh& mesh) {
-    const std::int64_t limit =
-        std::min(params.sequential_batch, mesh.element_count() / params.sequential_batch_elements);
-    return limit >= std::min(kMinimumBatch, params.sequential_batch) ? limit : 1;
+    return SequentialBatchLimit(params, mesh);
   }
   // How many of the lowest keys the heaps keep sorted: few enough that an update sifts through a
   // heap that stays in cache, enough that restocking (a pass over every element) is rare.
@@ -658,6 +654,12 @@ absl::StatusOr<PhaseSummary> SequentialSubstep::Run() {
 }
 
 }  // namespace
+
+std::int64_t SequentialBatchLimit(const SmoothingParams& params, const Mesh& mesh) {
+  const std::int64_t limit =
+      std::min(params.sequential_batch, mesh.element_count() / params.sequential_batch_elements);
+  return limit >= std::min(kMinimumBatch, params.sequential_batch) ? limit : 1;
+}
 
 absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion,
                                            SequentialStop stop) {

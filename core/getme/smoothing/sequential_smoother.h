@@ -35,6 +35,10 @@ enum class SequentialStop {
 // (SmoothingParams::sequential_batch, docs/parallel-sequential.md). Hands on the best state seen
 // (highest minimum criterion value).
 // Requires a valid mesh; returns Cancelled (mesh valid, best state restored) if cancelled.
+// Picks per batch: at most params.sequential_batch, and one per sequential_batch_elements
+// elements; where that is fewer than 16, 1: one pick at a time, on the calling thread alone.
+std::int64_t SequentialBatchLimit(const SmoothingParams& params, const Mesh& mesh);
+
 absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion,
                                            SequentialStop stop = SequentialStop::kStalledWindow);
 

@@ -90,10 +90,13 @@ absl::Status RunMethod(SmoothingContext& context, Method method, Record& record)
           !s.ok()) {
         return s;
       }
-      // The polish's colouring, made beside the sequential substep (polish.h says why). Its
+      // The polish's colouring, made beside the sequential substep where that substep leaves a
+      // core idle, one pick at a time (polish.h says why). Beside batches it would be a third
+      // thread on the pool's cores, whose batches wait for their slowest thread. The future's
       // destructor waits for it if the substep fails.
       std::future<PolishColouring> colouring;
-      if (polish && context.pool.thread_count() > 1) {
+      if (polish && context.pool.thread_count() > 1 &&
+          SequentialBatchLimit(context.params, context.mesh) == 1) {
         colouring = std::async(std::launch::async, [&context] {
           return MakePolishColouring(context.mesh, context.movable);
         });
