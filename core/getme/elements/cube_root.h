@@ -30,6 +30,14 @@
 #include "getme/elements/lanes.h"
 
 namespace getme {
+
+// ∛x = numerator / denominator (CubeRootAsRatio).
+template <typename S>
+struct CubeRootRatio {
+  S numerator;
+  S denominator;
+};
+
 namespace internal {
 
 template <typename S>
@@ -60,9 +68,9 @@ inline constexpr double kCubeRootSeed[] = {
 inline constexpr double kCubeRootOfTwo = 1.2599210498948732;   // ∛2
 inline constexpr double kCubeRootOfFour = 1.5874010519681994;  // ∛4
 
+// The polynomial seed of ∛x, relative error ≤ 2.2·10⁻⁷ (before the Halley step).
 // __builtin_bit_cast rather than std::bit_cast: a builtin is never a call, and no call that passes
 // lanes may be left (GETME_LANE_INLINE, lanes.h).
-// The polynomial seed of ∛x, relative error ≤ 2.2·10⁻⁷ (before the Halley step).
 template <typename S>
 GETME_LANE_INLINE S CubeRootSeed(S x) {
   using Bits = CubeRootBits<S>;
@@ -89,6 +97,15 @@ GETME_LANE_INLINE S CubeRootSeed(S x) {
   // · 2^q by adding q to the exponent field (modulo 2^64, so a negative q subtracts).
   seed = __builtin_bit_cast(S, __builtin_bit_cast(Bits, seed) + ((third - 1023) << 52));
   return seed;
+}
+
+// The Halley step from the seed, y + y (x − y³) / (2y³ + x), as the fraction
+// y (y³ + 2x) / (2y³ + x) (CubeRootAsRatio below).
+template <typename S>
+GETME_LANE_INLINE CubeRootRatio<S> CubeRootFraction(S x) {
+  const S seed = CubeRootSeed(x);
+  const S cube = seed * seed * seed;
+  return {seed * (cube + (x + x)), cube + cube + x};
 }
 
 template <typename S>
@@ -137,28 +154,18 @@ requires(kLaneCount<S> > 1) GETME_LANE_INLINE S CubeRoot(S x) {
 // with their long latency and the one divider per core they share, were what the quality kernels
 // waited for (perf annotate). Within a few ulps of ∛x, where CubeRoot is within one. Outside
 // [2^-300, 2^300] the fraction is CubeRoot(x) / 1, so every argument CubeRoot takes works here.
-template <typename S>
-struct CubeRootRatio {
-  S numerator;
-  S denominator;
-};
-
 [[gnu::always_inline]] inline CubeRootRatio<double> CubeRootAsRatio(double x) {
   const std::uint64_t biased = __builtin_bit_cast(std::uint64_t, x) >> 52;
   if (biased < internal::kCubeRootRatioLowestExponent ||
       biased > internal::kCubeRootRatioHighestExponent) {
     return {CubeRoot(x), 1.0};
   }
-  const double seed = internal::CubeRootSeed(x);
-  const double cube = seed * seed * seed;
-  return {seed * (cube + (x + x)), cube + cube + x};
+  return internal::CubeRootFraction(x);
 }
 
 template <typename S>
 requires(kLaneCount<S> > 1) GETME_LANE_INLINE CubeRootRatio<S> CubeRootAsRatio(S x) {
-  const S seed = internal::CubeRootSeed(x);
-  const S cube = seed * seed * seed;
-  CubeRootRatio<S> ratio{seed * (cube + (x + x)), cube + cube + x};
+  CubeRootRatio<S> ratio = internal::CubeRootFraction(x);
   const internal::LaneBits<S> biased = __builtin_bit_cast(internal::LaneBits<S>, x) >> 52;
   for (int l = 0; l < kLaneCount<S>; ++l) {
     if (biased[l] < internal::kCubeRootRatioLowestExponent ||

@@ -56,6 +56,9 @@ struct PolishState {
   // No accepted step leaves an element below this: the mesh's q_min when the mean stage began
   // (the worst-element stage has no floor: it hands on its best-q_min state instead).
   double q_floor = 0.0;
+  // The mean stage's stop tolerance (RunPolish chooses it: polish_tolerance or
+  // polish_final_tolerance); the worst-element stage has its own, relative to q_min.
+  double mean_tolerance = 0.0;
   std::vector<double> trial_quality;
   // 1 while something in the node's elements moved since its last step was tried. A node whose
   // neighbourhood is unchanged would compute the same refused (or converged) step again, so
@@ -335,15 +338,13 @@ enum class StageGoal {
 };
 
 // Sweeps of one stage over the colours; adds its sweeps and refusals to `summary` and reports a
-// progress event per sweep, numbered on from summary.iterations. `mean_tolerance` is the mean
-// stage's (RunPolish chooses it); the worst-element stage ignores it. Leaves the handed-on state in
+// progress event per sweep, numbered on from summary.iterations. Leaves the handed-on state in
 // the mesh, context.quality and `current`. Returns false if cancelled. `final_after_colour`
 // (ElementsByLastColour) lets the worst-element stage stop a first sweep it would drop; the
 // mean stage passes none.
 bool RunStage(SmoothingContext& context, const NodeColouring& colouring,
               const CompressedRows* final_after_colour, PolishState& state, StageGoal goal,
-              std::int64_t max_sweeps, double mean_tolerance, SmoothingContext::Summary& current,
-              PhaseSummary& summary) {
+              std::int64_t max_sweeps, SmoothingContext::Summary& current, PhaseSummary& summary) {
   Mesh& mesh = context.mesh;
   const SmoothingParams& params = context.params;
   for (auto& flag : state.stale) flag.store(1, std::memory_order_relaxed);
@@ -440,9 +441,10 @@ bool RunStage(SmoothingContext& context, const NodeColouring& colouring,
     // The mean stage's tolerance shrinks with what is left to a perfect mesh (1 − q_mean): on a
     // nearly regular mesh all of the remaining gain is below polish_tolerance, yet a regular grid
     // is the answer a user expects there (1000hex-block-internal-bias.vtk).
-    const double tolerance = goal == StageGoal::kQMean
-                                 ? std::min(mean_tolerance, kDefectShare * (1.0 - current.q_mean))
-                                 : params.polish_worst_tolerance * current.q_min;
+    const double tolerance =
+        goal == StageGoal::kQMean
+            ? std::min(state.mean_tolerance, kDefectShare * (1.0 - current.q_mean))
+            : params.polish_worst_tolerance * current.q_min;
     if (gain > 0.0 && previous_gain > 0.0) {
       const double ratio = std::min(gain / previous_gain, kMaxGainRatio);
       if (gain * ratio / (1.0 - ratio) < tolerance) break;
@@ -479,10 +481,10 @@ bool WorstClusterTriggered(const SmoothingParams& params,
 
 // Whether the worst-cluster stage may run after the mean stage, judged before it: its rule
 // holds, and the worst element has a free node (where it has none, FindCluster finds no cluster
-// and the stage ends at once: tire.vtk).
-bool WorstClusterMayFollow(const SmoothingContext& context,
-                           const SmoothingContext::Summary& current) {
-  return WorstClusterTriggered(context.params, current) && current.q_min < PinnedMinimum(context);
+// and the stage ends at once: tire.vtk). `pinned_minimum` is PinnedMinimum(context).
+bool WorstClusterMayFollow(const SmoothingParams& params, const SmoothingContext::Summary& current,
+                           double pinned_minimum) {
+  return WorstClusterTriggered(params, current) && current.q_min < pinned_minimum;
 }
 
 }  // namespace
@@ -508,16 +510,17 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context,
   SmoothingContext::Summary current = context.Summarize();
   PhaseSummary summary{Phase::kPolish, 0, 0.0, current.q_min, current.q_mean, 0};
   bool finished = true;
+  // Elements with no movable node keep their quality through every stage.
+  const double pinned_minimum = PinnedMinimum(context);
   // Worst elements first: the mean stage cannot lower q_min, so whatever q_min the polish is to
   // reach must come before it. Not where q_min is already the quality of an element with no
   // movable node: no step can raise it then, and the stage that serves q_min has nothing to do.
   if (params.polish_worst_exponent > 1.0 && params.polish_worst_max_sweeps > 0 &&
-      current.q_min < PinnedMinimum(context)) {
+      current.q_min < pinned_minimum) {
     state.exponent = params.polish_worst_exponent;
     state.q_floor = 0.0;
-    finished =
-        RunStage(context, colouring, &colouring_made->final_after_colour, state, StageGoal::kQMin,
-                 params.polish_worst_max_sweeps, params.polish_tolerance, current, summary);
+    finished = RunStage(context, colouring, &colouring_made->final_after_colour, state,
+                        StageGoal::kQMin, params.polish_worst_max_sweeps, current, summary);
   }
   // The mean stage's end is the polish's result unless the worst-cluster stage (below) starts
   // from it. Where it is the result, it stops at polish_final_tolerance: its stop rule then trades
@@ -529,14 +532,14 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context,
   // the stage, on what can change during it: the floor keeps q_min from falling and the stage
   // hands on its best q_mean, so the trigger rarely flips, and where it does the cluster stage
   // still runs as its rule says, only from the looser state.
-  const bool cluster_may_follow = WorstClusterMayFollow(context, current);
   if (finished) {
     state.exponent = 1.0;
     state.q_floor = current.q_min;
-    finished =
-        RunStage(context, colouring, nullptr, state, StageGoal::kQMean, params.polish_max_sweeps,
-                 cluster_may_follow ? params.polish_tolerance : params.polish_final_tolerance,
-                 current, summary);
+    state.mean_tolerance = WorstClusterMayFollow(params, current, pinned_minimum)
+                               ? params.polish_tolerance
+                               : params.polish_final_tolerance;
+    finished = RunStage(context, colouring, nullptr, state, StageGoal::kQMean,
+                        params.polish_max_sweeps, current, summary);
   }
   // Worst elements that lag far behind the rest after both node-local stages are a coupled
   // plateau (worst_cluster.h): their free nodes move together, then the mean stage runs again
@@ -549,9 +552,9 @@ absl::StatusOr<PhaseSummary> RunPolish(SmoothingContext& context,
     finished = RunWorstCluster(context, current, summary).ok();
     if (finished && current.q_min > q_min_before) {
       state.q_floor = current.q_min;
-      finished =
-          RunStage(context, colouring, nullptr, state, StageGoal::kQMean, params.polish_max_sweeps,
-                   params.polish_final_tolerance, current, summary);
+      state.mean_tolerance = params.polish_final_tolerance;
+      finished = RunStage(context, colouring, nullptr, state, StageGoal::kQMean,
+                          params.polish_max_sweeps, current, summary);
     }
   }
   context.FinishPhase(summary, current, phase_start);

@@ -82,7 +82,7 @@ class SequentialSubstep {
         penalty_(mesh_.element_count(), 0.0),
         criterion_value_(criterion == SelectionCriterion::kMeanRatio ? 0 : mesh_.element_count()),
         picked_in_batch_(mesh_.element_count(), -1),
-        batch_limit_(BatchLimit(params_, mesh_)),
+        batch_limit_(SequentialBatchLimit(params_, mesh_)),
         claimed_(batch_limit_ > 1 ? (mesh_.element_count() + 63) / 64 : 0, 0),
         selection_(mesh_.element_count(), 4 * batch_limit_, HeapStock(mesh_)),
         quality_min_(mesh_.element_count(), 1, HeapStock(mesh_)),
@@ -99,9 +99,6 @@ class SequentialSubstep {
   double CriterionValue(ElementId element) const {
     return criterion_value_.empty() ? std::max(0.0, context_.quality[element])
                                     : criterion_value_[element];
-  }
-  static std::int64_t BatchLimit(const SmoothingParams& params, const Mesh& mesh) {
-    return SequentialBatchLimit(params, mesh);
   }
   // How many of the lowest keys the heaps keep sorted: few enough that an update sifts through a
   // heap that stays in cache, enough that restocking (a pass over every element) is rare.
@@ -159,7 +156,7 @@ class SequentialSubstep {
   std::vector<double> criterion_value_;
   // The batch each element was last picked in (Δπ_r: picked in the batch before).
   std::vector<std::int64_t> picked_in_batch_;
-  const std::int64_t batch_limit_;  // BatchLimit
+  const std::int64_t batch_limit_;  // SequentialBatchLimit
   // With batches of more than one pick: a bit per element claimed by a pick of the batch being
   // chosen (TryClaim).
   std::vector<std::uint64_t> claimed_;

@@ -28,6 +28,10 @@ enum class SequentialStop {
 // Either rule also stops as soon as the minimum is the quality of an element with no movable
 // node: no pick can then give a new best state, so the state handed on is the same.
 
+// Picks per batch: at most params.sequential_batch, and one per sequential_batch_elements
+// elements; where that is fewer than 16, 1: one pick at a time, on the calling thread alone.
+std::int64_t SequentialBatchLimit(const SmoothingParams& params, const Mesh& mesh);
+
 // GETMe sequential (Sec. 3.2): repeatedly transform the element with the lowest corrected quality
 // q + π in place (a min-heap of the lowest keys, with key updates), revert it if a neighbour
 // becomes invalid, and adjust its penalty π. On large meshes the picks go in batches of
@@ -35,10 +39,6 @@ enum class SequentialStop {
 // (SmoothingParams::sequential_batch, docs/parallel-sequential.md). Hands on the best state seen
 // (highest minimum criterion value).
 // Requires a valid mesh; returns Cancelled (mesh valid, best state restored) if cancelled.
-// Picks per batch: at most params.sequential_batch, and one per sequential_batch_elements
-// elements; where that is fewer than 16, 1: one pick at a time, on the calling thread alone.
-std::int64_t SequentialBatchLimit(const SmoothingParams& params, const Mesh& mesh);
-
 absl::StatusOr<PhaseSummary> RunSequential(SmoothingContext& context, SelectionCriterion criterion,
                                            SequentialStop stop = SequentialStop::kStalledWindow);
 
